@@ -1,0 +1,132 @@
+// A parsed, validated case: plain structs, SI values, defaults filled in.
+// The YAML schema that fills these is described once in case/case_schema.hpp and serves parsing
+// and the resolved echo (case.resolved.yaml) alike; docs/input-reference.md documents it.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "materials/material.hpp"
+
+namespace coldspray::case_file {
+
+using Vec3 = Eigen::Vector3d;
+
+struct Sphere {
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;
+
+  friend bool operator==(const Sphere&, const Sphere&) = default;
+};
+// Axis along z, from base_center up by height.
+struct Cylinder {
+  Vec3 base_center = Vec3::Zero();
+  double radius = 0.0;
+  double height = 0.0;
+
+  friend bool operator==(const Cylinder&, const Cylinder&) = default;
+};
+struct Box {
+  Vec3 min = Vec3::Zero();
+  Vec3 max = Vec3::Zero();
+
+  friend bool operator==(const Box&, const Box&) = default;
+};
+using Shape = std::variant<Sphere, Cylinder, Box>;
+
+// Faces of a body that absorbing or fixed conditions apply to.
+enum class BodyFace { Bottom, Side, Top };
+
+struct Body {
+  std::string name;
+  std::string material;  // a key of Case::materials
+  Shape shape;
+  double spacing = 0.0;  // lattice spacing of the seeded points, m
+  Vec3 velocity = Vec3::Zero();
+  double temperature = 298.0;       // K
+  std::vector<BodyFace> absorbing;  // Lysmer-Kuhlemeyer dashpots (thesis §3.5.5)
+  std::vector<BodyFace> fixed;      // zero velocity
+
+  friend bool operator==(const Body&, const Body&) = default;
+};
+
+enum class FaceCondition { Free, Fixed, Roller };
+enum class GridFace { XMin, XMax, YMin, YMax, ZMin, ZMax };
+
+struct Grid {
+  double cell_size = 0.0;   // m
+  std::optional<Vec3> min;  // default: bodies' bounding box plus margin (issue 3)
+  std::optional<Vec3> max;
+  std::map<GridFace, FaceCondition> faces;  // all six once read; free unless set
+
+  friend bool operator==(const Grid&, const Grid&) = default;
+};
+
+enum class Method { Mpm };
+enum class Geometry { ThreeD, Axisymmetric };
+enum class ShapeFunction { Linear, Gimp };
+
+struct ArtificialViscosity {
+  bool enabled = true;
+  double linear = 0.06;    // c0 in q = rho l (c1 l (tr D)^2 - c0 c tr D)
+  double quadratic = 1.5;  // c1
+
+  friend bool operator==(const ArtificialViscosity&, const ArtificialViscosity&) = default;
+};
+
+struct Solver {
+  Method method = Method::Mpm;
+  Geometry geometry = Geometry::ThreeD;
+  ShapeFunction shape_function = ShapeFunction::Gimp;
+  double end_time = 0.0;           // s
+  double cfl = 0.3;                // dt = cfl h / max(c + |v|)
+  std::optional<double> dt_scale;  // alternative: fraction of the critical step (thesis §5.1.4)
+  ArtificialViscosity artificial_viscosity;
+
+  friend bool operator==(const Solver&, const Solver&) = default;
+};
+
+enum class ContactNormal { MaxGradient, Body, HighestId };
+
+struct Contact {
+  ContactNormal normal = ContactNormal::MaxGradient;
+  std::string normal_body;  // with ContactNormal::Body
+  double friction = 0.0;    // Coulomb coefficient; 0 = frictionless
+
+  friend bool operator==(const Contact&, const Contact&) = default;
+};
+
+struct Probe {
+  std::string name;
+  Vec3 position = Vec3::Zero();
+  std::vector<std::string> fields;  // pressure, sigma_xx..sigma_zz, velocity_x..z, ...
+
+  friend bool operator==(const Probe&, const Probe&) = default;
+};
+
+struct Output {
+  double history_interval = 0.0;   // s; 0 = every step
+  double snapshot_interval = 0.0;  // s; 0 = first and last only
+  std::vector<Probe> probes;
+
+  friend bool operator==(const Output&, const Output&) = default;
+};
+
+struct Case {
+  std::string name;
+  std::string description;
+  std::string source_file;  // path the case was read from
+  // Materials the bodies use, resolved (built-in, or user-defined with an optional base).
+  std::map<std::string, materials::Material> materials;
+  std::vector<Body> bodies;
+  Grid grid;
+  Solver solver;
+  Contact contact;
+  Output output;
+};
+
+}  // namespace coldspray::case_file

@@ -1,0 +1,157 @@
+// The case-file schema: each struct's YAML keys, units, presence and ranges, written once.
+// The Reader (parsing), the Writer (the resolved echo) and the key lists all run these same
+// functions, so the echo cannot drift from the parser. docs/input-reference.md documents them.
+//
+// An IO provides: scalar, scalars, table, quantity, vector, section, section_either, variant,
+// list, materials and check (see reader.hpp for their meaning).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "case/case.hpp"
+#include "case/codecs.hpp"
+#include "case/field_rules.hpp"
+#include "case/material_schema.hpp"
+#include "core/units.hpp"
+
+namespace coldspray::case_file {
+
+inline constexpr std::array<std::string_view, 3> kShapeTypes{"sphere", "cylinder", "box"};
+
+inline constexpr Names<BodyFace, 3> kBodyFaceNames{
+    {{{"bottom", BodyFace::Bottom}, {"side", BodyFace::Side}, {"top", BodyFace::Top}}}};
+
+inline constexpr Names<GridFace, 6> kGridFaceNames{{{{"xmin", GridFace::XMin},
+                                                     {"xmax", GridFace::XMax},
+                                                     {"ymin", GridFace::YMin},
+                                                     {"ymax", GridFace::YMax},
+                                                     {"zmin", GridFace::ZMin},
+                                                     {"zmax", GridFace::ZMax}}}};
+
+inline constexpr Names<FaceCondition, 3> kFaceConditionNames{{{{"free", FaceCondition::Free},
+                                                               {"fixed", FaceCondition::Fixed},
+                                                               {"roller", FaceCondition::Roller}}}};
+
+inline constexpr Names<Method, 1> kMethodNames{{{{"mpm", Method::Mpm}}}};
+
+inline constexpr Names<Geometry, 2> kGeometryNames{
+    {{{"3d", Geometry::ThreeD}, {"axisymmetric", Geometry::Axisymmetric}}}};
+
+inline constexpr Names<ShapeFunction, 2> kShapeFunctionNames{
+    {{{"linear", ShapeFunction::Linear}, {"gimp", ShapeFunction::Gimp}}}};
+
+inline constexpr std::array<std::string_view, 14> kProbeFields{
+    "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
+    "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
+
+// contact.normal: "max-gradient", "highest-id" or "body:NAME"; sets normal and normal_body.
+struct ContactNormalText {
+  std::string expected() const { return "max-gradient, highest-id or body:NAME"; }
+  void parse(std::string_view text, Contact& contact) const;
+  std::string format(const Contact& contact) const;
+};
+
+// A case name names the default output folder.
+bool is_folder_name(const std::string& name);
+
+template <class IO>
+void fields(IO& io, Sphere& s) {
+  io.vector("center", s.center, units::kLength, kRequired);
+  io.quantity("radius", s.radius, units::kLength, kRequired, kPositive);
+}
+
+template <class IO>
+void fields(IO& io, Cylinder& c) {
+  io.vector("base_center", c.base_center, units::kLength, kRequired);
+  io.quantity("radius", c.radius, units::kLength, kRequired, kPositive);
+  io.quantity("height", c.height, units::kLength, kRequired, kPositive);
+}
+
+template <class IO>
+void fields(IO& io, Box& b) {
+  io.vector("min", b.min, units::kLength, kRequired);
+  io.vector("max", b.max, units::kLength, kRequired);
+  io.check((b.min.array() < b.max.array()).all(), "max",
+           "must be greater than min in every component");
+}
+
+template <class IO>
+void fields(IO& io, Body& b) {
+  io.scalar("name", b.name, Text{}, kRequired);
+  io.scalar("material", b.material, Text{}, kRequired);
+  io.variant("shape", b.shape, "type", kShapeTypes, kRequired);
+  io.quantity("spacing", b.spacing, units::kLength, kRequired, kPositive);
+  io.vector("velocity", b.velocity, units::kVelocity, kOptional);
+  io.quantity("temperature", b.temperature, units::kTemperature, kOptional, kPositive);
+  io.scalars("absorbing", b.absorbing, kBodyFaceNames, kOptional);
+  io.scalars("fixed", b.fixed, kBodyFaceNames, kOptional);
+}
+
+template <class IO>
+void fields(IO& io, Grid& g) {
+  io.quantity("cell_size", g.cell_size, units::kLength, kRequired, kPositive);
+  io.vector("min", g.min, units::kLength, kOptional);
+  io.vector("max", g.max, units::kLength, kOptional);
+  io.check(g.min.has_value() == g.max.has_value(), g.min ? "min" : "max",
+           "give both grid.min and grid.max, or neither");
+  io.check(!g.min || !g.max || (g.min->array() < g.max->array()).all(), "max",
+           "must be greater than min in every component");
+  io.table("faces", g.faces, kGridFaceNames, kFaceConditionNames, FaceCondition::Free);
+}
+
+template <class IO>
+void fields(IO& io, ArtificialViscosity& a) {
+  io.scalar("enabled", a.enabled, Flag{}, kOptional);
+  io.quantity("linear", a.linear, units::kDimensionless, kOptional, kNonNegative);
+  io.quantity("quadratic", a.quadratic, units::kDimensionless, kOptional, kNonNegative);
+}
+
+template <class IO>
+void fields(IO& io, Solver& s) {
+  io.scalar("method", s.method, kMethodNames, kOptional);
+  io.scalar("geometry", s.geometry, kGeometryNames, kOptional);
+  io.scalar("shape_function", s.shape_function, kShapeFunctionNames, kOptional);
+  io.quantity("end_time", s.end_time, units::kTime, kRequired, kPositive);
+  io.quantity("cfl", s.cfl, units::kDimensionless, kOptional, kFraction);
+  io.quantity("dt_scale", s.dt_scale, units::kDimensionless, kOptional, kFraction);
+  io.section("artificial_viscosity", s.artificial_viscosity, kOptional);
+}
+
+template <class IO>
+void fields(IO& io, Contact& c) {
+  io.scalar("normal", c, ContactNormalText{}, kOptional);
+  io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
+}
+
+template <class IO>
+void fields(IO& io, Probe& p) {
+  io.scalar("name", p.name, Text{}, kRequired);
+  io.vector("position", p.position, units::kLength, kRequired);
+  io.scalars("fields", p.fields, Keywords{kProbeFields}, kRequired);
+  io.check(!p.fields.empty(), "fields", "needs at least one field");
+}
+
+template <class IO>
+void fields(IO& io, Output& o) {
+  io.quantity("history_interval", o.history_interval, units::kTime, kOptional, kNonNegative);
+  io.quantity("snapshot_interval", o.snapshot_interval, units::kTime, kOptional, kNonNegative);
+  io.list("probes", o.probes, kOptional);
+}
+
+template <class IO>
+void fields(IO& io, Case& c) {
+  io.scalar("name", c.name, Text{}, kRequired);
+  io.check(is_folder_name(c.name), "name",
+           "must be usable as a folder name (not empty, no '/', not '.' or '..')");
+  io.scalar("description", c.description, Text{}, kOptional);
+  io.materials("materials", c.materials);
+  io.list("bodies", c.bodies, kRequired);
+  io.check(!c.bodies.empty(), "bodies", "needs at least one body");
+  io.section("grid", c.grid, kRequired);
+  io.section("solver", c.solver, kRequired);
+  io.section("contact", c.contact, kOptional);
+  io.section("output", c.output, kOptional);
+}
+
+}  // namespace coldspray::case_file

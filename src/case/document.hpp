@@ -1,0 +1,58 @@
+// A YAML tree together with where its nodes came from, so that every error can name
+// "FILE:LINE:COLUMN" (or "--set KEY" for a value given on the command line).
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace coldspray::case_file {
+
+class Document {
+ public:
+  // Reads a YAML file; InputError when it is missing, unreadable or not valid YAML.
+  static Document from_file(const std::string& path);
+  // Parses YAML text; `name` stands for the file in messages (e.g. "builtin:al-ptw").
+  static Document from_text(std::string name, std::string_view text);
+
+  const std::string& name() const { return name_; }
+  const YAML::Node& root() const { return root_; }
+  YAML::Node& root() { return root_; }
+
+  // Records that `node` and everything under it came from `origin` (e.g. "--set solver.cfl").
+  void mark_origin(const YAML::Node& node, std::string origin);
+
+  // "FILE:LINE:COLUMN" of a node (1-based), its origin if marked, or FILE for a node with no
+  // position.
+  std::string where(const YAML::Node& node) const;
+  // The location of a map entry: the key's position, or the value's origin if marked.
+  std::string where(const YAML::Node& key, const YAML::Node& value) const;
+  // The location of the node at a key path (list items selected by name or index), or of its
+  // deepest existing ancestor.
+  std::string where(std::span<const std::string> path) const;
+
+ private:
+  Document(std::string name, YAML::Node root) : name_(std::move(name)), root_(std::move(root)) {}
+  std::optional<std::string> origin(const YAML::Node& node) const;
+
+  std::string name_;
+  YAML::Node root_;
+  std::vector<std::pair<YAML::Node, std::string>> origins_;
+};
+
+// The index of the item of a list that `selector` names: the item whose `name` is selector, or
+// the item at that integer index.
+std::optional<std::size_t> find_item(const YAML::Node& list, std::string_view selector);
+
+// How a key path names a list item: by its `name` when it has one, else by its index.
+std::string item_label(const YAML::Node& item, std::size_t index);
+
+// "a map", "a list", "nothing", "text 'abc'": for "expected X, got Y" messages.
+std::string describe(const YAML::Node& node);
+
+}  // namespace coldspray::case_file

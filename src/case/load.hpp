@@ -1,0 +1,41 @@
+// Reading case files and materials: the public entry points of case/.
+// Every failure is an InputError naming file:line:column (or "--set KEY") and the key path.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "case/case.hpp"
+
+namespace coldspray::case_file {
+
+// One `--set KEY=VALUE`: KEY a dotted path (list items selected by their `name`, or by index),
+// VALUE a YAML scalar or flow sequence/map ("700 m/s", "[0, 0, -700 m/s]").
+struct Override {
+  std::string key;
+  std::string value;
+};
+
+// Splits "KEY=VALUE"; throws InputError (where = "--set") when there is no '=' or no key.
+Override parse_override(std::string_view text);
+
+// Reads, overrides, parses and validates a case file. Throws InputError on any problem.
+Case load_case(const std::string& path, const std::vector<Override>& overrides = {});
+
+// The fully resolved case (defaults filled in, SI numbers, materials expanded), as YAML that
+// load_case reads back to an equal Case.
+void write_resolved(const Case& c, std::ostream& out);
+
+// Built-in materials (data/materials/*.yaml).
+std::vector<std::string> builtin_material_names();
+materials::Material builtin_material(const std::string& name);  // InputError if unknown
+
+// "NAME" for a built-in, or "CASE.yaml:NAME" for a material of a case file's `materials:`.
+materials::Material resolve_material(const std::string& reference);
+
+// Every parameter of a material with its SI unit, grouped by sub-model, with each group's source.
+void print_material(const materials::Material& m, std::ostream& out);
+
+}  // namespace coldspray::case_file

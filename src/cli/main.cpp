@@ -1,0 +1,41 @@
+// coldspray: cold-spray particle impact simulation. Entry point: parses the command line,
+// dispatches to one subcommand and maps failures to exit statuses (core/error.hpp).
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace coldspray;
+  CLI::App app{"coldspray: simulate cold-spray particle impacts (MPM with direct bonding)",
+               "coldspray"};
+  app.set_version_flag("--version", std::string("coldspray ") + COLDSPRAY_VERSION);
+  app.require_subcommand(1);
+  cli::add_run(app);
+  cli::add_check(app);
+  cli::add_materials(app);
+  cli::add_material_test(app);
+
+  try {
+    app.parse(argc, argv);
+    return kExitOk;
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitBadInput;
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const RunFault& e) {
+    std::cerr << "fault: " << e.what() << "\n";
+    return kExitRunFault;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,310 @@
+#include "core/units.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <system_error>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+
+namespace coldspray::units {
+
+namespace {
+
+// Every accepted unit is a power of ten times a coherent SI unit, so a conversion is a shift of
+// the decimal exponent: "14 um" becomes "14e-6", which from_chars rounds correctly.
+struct Unit {
+  std::string_view symbol;
+  Dimension dimension;
+  int exponent10 = 0;  // the unit in SI is 10^exponent10
+  bool takes_prefix = true;
+};
+
+constexpr std::array kUnits{
+    Unit{"m", kLength},    Unit{"s", kTime},
+    Unit{"g", kMass, -3},  Unit{"K", kTemperature, 0, false},
+    Unit{"Pa", kPressure}, Unit{"J", kEnergy},
+    Unit{"N", kForce},     Unit{"W", kEnergy / kTime},
+};
+
+struct Prefix {
+  std::string_view symbol;
+  int exponent10 = 0;
+};
+
+// u, the micro sign and the Greek mu all stand for micro.
+constexpr std::array kPrefixes{
+    Prefix{"n", -9}, Prefix{"u", -6}, Prefix{"\u00b5", -6}, Prefix{"\u03bc", -6}, Prefix{"m", -3},
+    Prefix{"c", -2}, Prefix{"k", 3},  Prefix{"M", 6},       Prefix{"G", 9},
+};
+
+constexpr std::array<std::string_view, 8> kTemperatureScales{
+    "degC", "degF", "C", "F", "\u00b0C", "\u00b0F", "celsius", "fahrenheit"};
+
+constexpr std::string_view kKnownUnits =
+    "known units: m, s, g, kg, K, Pa, J, N, W; prefixes n, u, m, c, k, M, G (not on K)";
+
+// A unit symbol with its prefix applied.
+struct Factor {
+  Dimension dimension;
+  int exponent10 = 0;
+};
+
+std::optional<Factor> find_unit(std::string_view symbol) {
+  for (const Unit& u : kUnits) {
+    if (symbol == u.symbol) return Factor{u.dimension, u.exponent10};
+  }
+  for (const Prefix& p : kPrefixes) {
+    if (!symbol.starts_with(p.symbol)) continue;
+    for (const Unit& u : kUnits) {
+      if (u.takes_prefix && symbol.substr(p.symbol.size()) == u.symbol) {
+        return Factor{u.dimension, u.exponent10 + p.exponent10};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+bool is_temperature_scale(std::string_view symbol) {
+  for (std::string_view scale : kTemperatureScales) {
+    if (symbol == scale) return true;
+  }
+  return false;
+}
+
+bool is_symbol_char(char c) {
+  // Letters, and the bytes of the UTF-8 micro sign, Greek mu and degree sign.
+  return std::isalpha(static_cast<unsigned char>(c)) != 0 || (static_cast<unsigned char>(c) & 0x80);
+}
+
+// Reads a unit expression: UNIT[^INT] (('*' | '/') UNIT[^INT])*, with "1" allowed as the first
+// factor ("1/s"). Each '/' divides by the one factor that follows, left to right.
+class UnitExpression {
+ public:
+  UnitExpression(std::string_view expression, std::string_view whole)
+      : text_(expression), whole_(whole) {}
+
+  Factor parse() {
+    Factor total;
+    skip_spaces();
+    if (peek() == '1') {
+      ++pos_;
+      skip_spaces();
+      if (peek() != '/') fail("'1' may only start a unit written as 1/UNIT");
+    } else {
+      total = factor();
+    }
+    while (true) {
+      skip_spaces();
+      if (pos_ == text_.size()) return total;
+      const char op = text_[pos_];
+      if (op != '*' && op != '/') fail(unexpected());
+      ++pos_;
+      skip_spaces();
+      const Factor f = factor();
+      if (op == '*') {
+        total = {total.dimension * f.dimension, total.exponent10 + f.exponent10};
+      } else {
+        total = {total.dimension / f.dimension, total.exponent10 - f.exponent10};
+      }
+    }
+  }
+
+ private:
+  char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
+
+  void skip_spaces() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+  }
+
+  Factor factor() {
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && is_symbol_char(text_[pos_])) ++pos_;
+    const std::string_view symbol = text_.substr(start, pos_ - start);
+    if (symbol.empty()) fail(unexpected());
+    if (is_temperature_scale(symbol)) {
+      fail("temperatures are given in K only ('" + std::string(symbol) +
+           "' is not accepted; 20 degC is 293.15 K)");
+    }
+    const std::optional<Factor> unit = find_unit(symbol);
+    if (!unit) {
+      fail("unknown unit '" + std::string(symbol) + "' (" + std::string(kKnownUnits) + ")");
+    }
+    const int power = exponent();
+    return {unit->dimension.pow(power), unit->exponent10 * power};
+  }
+
+  int exponent() {
+    if (peek() != '^') return 1;
+    ++pos_;
+    int power = 0;
+    const char* first = text_.data() + pos_;
+    const char* last = text_.data() + text_.size();
+    const auto [end, ec] = std::from_chars(first, last, power);
+    if (ec != std::errc() || power == 0) fail("'^' must be followed by a non-zero integer power");
+    pos_ += static_cast<std::size_t>(end - first);
+    return power;
+  }
+
+  std::string unexpected() const {
+    if (pos_ == text_.size()) return "unit expression ends early";
+    return "unexpected '" + std::string(1, text_[pos_]) +
+           "' in the unit (write units as e.g. kg/m^3 or J/kg/K, with '*' between factors)";
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw UnitError("'" + std::string(whole_) + "': " + message);
+  }
+
+  std::string_view text_;
+  std::string_view whole_;
+  std::size_t pos_ = 0;
+};
+
+// `number` times 10^shift, rounded once: the decimal exponent is shifted in the text.
+double scale_by_power_of_ten(std::string_view number, int shift, std::string_view whole) {
+  std::string mantissa(number);
+  int exponent = 0;
+  if (const std::size_t e = mantissa.find_first_of("eE"); e != std::string::npos) {
+    std::from_chars(mantissa.data() + e + 1, mantissa.data() + mantissa.size(), exponent);
+    mantissa.resize(e);
+  }
+  const std::string shifted = mantissa + "e" + std::to_string(exponent + shift);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(shifted.data(), shifted.data() + shifted.size(), value);
+  if (ec != std::errc()) throw UnitError("'" + std::string(whole) + "': value out of range");
+  return value;
+}
+
+// A parsed quantity, and whether its text named a unit (a bare number did not).
+struct Parsed {
+  Quantity quantity;
+  bool has_unit = false;
+};
+
+Parsed parse(std::string_view text) {
+  const std::string_view trimmed = trim(text);
+  if (trimmed.empty()) throw UnitError("empty value; expected a number with an optional unit");
+  const std::string_view unsigned_text = trimmed.front() == '+' ? trimmed.substr(1) : trimmed;
+  double value = 0.0;
+  const char* first = unsigned_text.data();
+  const char* last = first + unsigned_text.size();
+  const auto [end, ec] = std::from_chars(first, last, value);
+  if (ec == std::errc::result_out_of_range) {
+    throw UnitError("'" + std::string(trimmed) + "': value out of range");
+  }
+  if (ec != std::errc()) {
+    throw UnitError("'" + std::string(trimmed) + "' is not a number");
+  }
+  if (!std::isfinite(value)) {
+    throw UnitError("'" + std::string(trimmed) + "': value must be a finite number");
+  }
+  const std::string_view number = unsigned_text.substr(0, static_cast<std::size_t>(end - first));
+  const std::string_view unit = trim(unsigned_text.substr(number.size()));
+  if (unit.empty()) return {{value, kDimensionless}, false};
+  const Factor f = UnitExpression(unit, trimmed).parse();
+  return {{scale_by_power_of_ten(number, f.exponent10, trimmed), f.dimension}, true};
+}
+
+std::string with_article(const std::string& noun) {
+  const bool vowel =
+      !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + noun;
+}
+
+std::string describe(const Dimension& d) {
+  if (d == kDimensionless) return "dimensionless number";
+  return dimension_name(d) + " (" + si_unit(d) + ")";
+}
+
+}  // namespace
+
+Quantity parse_quantity(std::string_view text) { return parse(text).quantity; }
+
+double parse_as(std::string_view text, const Dimension& expected) {
+  const Parsed p = parse(text);
+  if (p.quantity.dimension == expected || !p.has_unit) return p.quantity.value;
+  throw UnitError("expected " + with_article(describe(expected)) + ", got " +
+                  with_article(describe(p.quantity.dimension)) + " in '" + std::string(trim(text)) +
+                  "'");
+}
+
+std::string si_unit(const Dimension& d) {
+  struct Named {
+    Dimension dimension;
+    std::string_view unit;
+  };
+  static constexpr std::array kNamed{
+      Named{kDimensionless, "-"},
+      Named{kLength, "m"},
+      Named{kMass, "kg"},
+      Named{kTime, "s"},
+      Named{kTemperature, "K"},
+      Named{kVelocity, "m/s"},
+      Named{kRate, "1/s"},
+      Named{kForce, "N"},
+      Named{kEnergy, "J"},
+      Named{kEnergy / kTime, "W"},
+      Named{kPressure, "Pa"},
+      Named{kDensity, "kg/m^3"},
+      Named{kEnergyPerArea, "J/m^2"},
+      Named{kEnergyPerAreaPerTime, "J/m^2/s"},
+      Named{kSpecificHeat, "J/kg/K"},
+      Named{kEnergy / kMass, "J/kg"},
+  };
+  for (const Named& n : kNamed) {
+    if (n.dimension == d) return std::string(n.unit);
+  }
+  const std::array<std::pair<std::string_view, int>, 4> powers{
+      {{"kg", d.mass}, {"m", d.length}, {"s", d.time}, {"K", d.temperature}}};
+  std::string numerator;
+  std::string denominator;
+  for (const auto& [symbol, power] : powers) {
+    if (power == 0) continue;
+    const int magnitude = std::abs(power);
+    const std::string factor =
+        magnitude == 1 ? std::string(symbol) : fmt::format("{}^{}", symbol, magnitude);
+    if (power > 0) {
+      numerator += fmt::format("{}{}", numerator.empty() ? "" : "*", factor);
+    } else {
+      denominator += fmt::format("/{}", factor);
+    }
+  }
+  return (numerator.empty() ? "1" : numerator) + denominator;
+}
+
+std::string dimension_name(const Dimension& d) {
+  struct Named {
+    Dimension dimension;
+    std::string_view name;
+  };
+  static constexpr std::array kNamed{
+      Named{kDimensionless, "dimensionless number"},
+      Named{kLength, "length"},
+      Named{kMass, "mass"},
+      Named{kTime, "time"},
+      Named{kTemperature, "temperature"},
+      Named{kVelocity, "velocity"},
+      Named{kRate, "rate"},
+      Named{kForce, "force"},
+      Named{kEnergy, "energy"},
+      Named{kEnergy / kTime, "power"},
+      Named{kPressure, "pressure"},
+      Named{kDensity, "density"},
+      Named{kEnergyPerArea, "energy per area"},
+      Named{kEnergyPerAreaPerTime, "energy per area and time"},
+      Named{kSpecificHeat, "specific heat"},
+      Named{kEnergy / kMass, "specific energy"},
+  };
+  for (const Named& n : kNamed) {
+    if (n.dimension == d) return std::string(n.name);
+  }
+  return si_unit(d);
+}
+
+}  // namespace coldspray::units

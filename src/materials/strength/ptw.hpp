@@ -1,0 +1,54 @@
+// Preston-Tonks-Wallace flow stress (thesis eqs 2.4-2.8; Preston, Tonks & Wallace,
+// J. Appl. Phys. 93 (2003) 211), in SI throughout.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "materials/material.hpp"
+#include "materials/strength/conditions.hpp"
+
+namespace coldspray::materials::strength {
+
+// Floor on the plastic strain rate inside PTW, 1/s: ln(gamma xi_dot / rate) diverges at rest.
+// The yield check evaluates the flow stress at rest, i.e. here: the least flow stress any plastic
+// step can have. In the consistent return it acts only on increments below 1e-6 dt, negligible.
+// Where the erf of eq 2.7 is not saturated (small kappa T/Tm, e.g. cu-ptw at room temperature)
+// the at-rest flow stress depends on the floor, logarithmically.
+inline constexpr double kPtwMinStrainRate = 1e-6;
+
+// Eq 2.8: the reciprocal time for a transverse wave to cross an atom,
+// xi_dot = (1/2) (4 pi rho / (3 M))^(1/3) (mu / rho)^(1/2). In SI (rho kg/m^3, M kg, mu Pa) the
+// result is in 1/s with no conversion factor (the thesis' code needed its um/us/ng/MPa set).
+inline double ptw_atomic_rate(const Ptw& p, double density, double shear_modulus) {
+  return 0.5 * std::cbrt(4.0 * std::numbers::pi * density / (3.0 * p.atomic_mass)) *
+         std::sqrt(shear_modulus / density);
+}
+
+inline double flow_stress(const Ptw& p, double eqps, double rate, const Conditions& c) {
+  const double T_hat = c.temperature / c.melt_temperature;
+  if (T_hat >= 1.0) return 0.0;  // melted: no strength
+  // ln of the dimensionless rate r = rate/(gamma xi_dot); the powers of r below as exp(k ln r).
+  const double ln_r = std::log(std::max(rate, kPtwMinStrainRate) /
+                               (p.gamma * ptw_atomic_rate(p, c.density, c.shear_modulus)));
+  const double thermal = std::erf(-p.kappa * T_hat * ln_r);
+  const double overdriven = p.s0 * std::exp(p.s1 * ln_r);
+  // Eq 2.7a/b: thermal activation against the overdriven-shock power laws.
+  const double tau_s = std::max(p.s0 - (p.s0 - p.s_inf) * thermal, overdriven);
+  const double tau_y = std::max(p.y0 - (p.y0 - p.y_inf) * thermal,
+                                std::min(p.y1 * std::exp(p.y2 * ln_r), overdriven));
+  // tau_s <= tau_y: saturated, eq 2.4's limit beta -> 0 for eqps > 0 (and below it, eq 2.4 would
+  // soften with strain).
+  if (tau_s <= tau_y) return 2.0 * tau_s * c.shear_modulus;
+  // Eqs 2.4-2.5 rewritten exactly as tau = tau_y + alpha ln(1 + psi (1 - exp(-w/psi))),
+  // w = theta eqps / alpha, so expm1/log1p keep it accurate near eqps = 0 and near saturation.
+  const double alpha = (p.s0 - tau_y) / p.p;
+  const double psi = std::expm1((tau_s - tau_y) / alpha);
+  const double w = p.theta * eqps / alpha;
+  // beta > ~709 overflows psi; its limit psi (1 - exp(-w/psi)) -> w.
+  const double hardening = std::isinf(psi) ? w : -psi * std::expm1(-w / psi);
+  return 2.0 * (tau_y + alpha * std::log1p(hardening)) * c.shear_modulus;
+}
+
+}  // namespace coldspray::materials::strength

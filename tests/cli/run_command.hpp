@@ -1,0 +1,19 @@
+// Runs the built `coldspray` binary for command-line tests.
+#pragma once
+
+#include <string>
+
+namespace coldspray::testing {
+
+struct CommandResult {
+  int status = -1;     // exit status
+  std::string output;  // stdout and stderr, interleaved
+};
+
+// Runs `coldspray ARGS` through the shell in `workdir` (default: a fresh temporary folder).
+CommandResult run_coldspray(const std::string& args, const std::string& workdir = "");
+
+// A new empty folder under the system temporary directory.
+std::string make_temp_dir();
+
+}  // namespace coldspray::testing

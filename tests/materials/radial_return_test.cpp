@@ -1,0 +1,65 @@
+// The consistent-return root solve (radial_return.hpp) on flow-stress functions with known
+// roots, including ones that would defeat an unguarded Newton or secant iteration.
+#include "materials/radial_return.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace coldspray::materials {
+namespace {
+
+constexpr double kTrial = 500e6, kThreeG = 3.0 * 26e9;
+
+// Linear hardening sigma_y = Y + H x: f is linear, regula falsi is exact at once,
+// x = (trial - Y)/(3G + H).
+TEST(MaterialsRadialReturn, LinearHardeningIsExactInOneStep) {
+  const double Y = 300e6, H = 2e9;
+  const PlasticIncrement r =
+      solve_plastic_increment(kTrial, kThreeG, Y, [&](double x) { return Y + H * x; });
+  const double x = (kTrial - Y) / (kThreeG + H);
+  EXPECT_NEAR(r.eqps_increment, x, 1e-14 * x);
+  EXPECT_NEAR(r.flow_stress, Y + H * x, 1e-14 * kTrial);
+  EXPECT_LE(r.evaluations, 2);
+}
+
+// Zero flow stress (melt): all of the trial deviator is returned, x = trial/(3G), at once.
+TEST(MaterialsRadialReturn, ZeroFlowStressReturnsToTheOrigin) {
+  const PlasticIncrement r =
+      solve_plastic_increment(kTrial, kThreeG, 0.0, [](double) { return 0.0; });
+  EXPECT_EQ(r.eqps_increment, kTrial / kThreeG);
+  EXPECT_EQ(r.flow_stress, 0.0);
+  EXPECT_EQ(r.evaluations, 1);
+}
+
+// A strongly rate-sensitive flow stress, sigma_y = Y (x/dt / 1e-3)^0.02, infinitely steep at
+// x = 0 (sigma_y(0) = 0). The result must meet the documented tolerance, agree with a plain
+// 200-step bisection, and take far fewer evaluations than bisection.
+TEST(MaterialsRadialReturn, SteepRateSensitivityConverges) {
+  const double Y = 200e6, dt = 1e-9;
+  auto flow = [&](double x) { return Y * std::pow(x / dt / 1e-3, 0.02); };
+  const PlasticIncrement r = solve_plastic_increment(kTrial, kThreeG, 0.0, flow);
+  const double x = r.eqps_increment;
+  EXPECT_LE(std::abs(kTrial - kThreeG * x - flow(x)), kReturnTolerance * kTrial);
+  EXPECT_EQ(r.flow_stress, flow(x));
+  double a = 0.0, b = kTrial / kThreeG;
+  for (int i = 0; i < 200; ++i) {
+    const double c = 0.5 * (a + b);
+    (kTrial - kThreeG * c - flow(c) > 0.0 ? a : b) = c;
+  }
+  EXPECT_NEAR(x, a, 1e-10 * a);
+  EXPECT_LT(r.evaluations, 15);
+}
+
+// A flow stress that jumps across the trial line has no root: the solver must still stop, with
+// the bracket collapsed onto the jump, inside its evaluation bound.
+TEST(MaterialsRadialReturn, DiscontinuousFlowStressTerminates) {
+  const double x_jump = 1e-3;
+  auto flow = [&](double x) { return x < x_jump ? 100e6 : 490e6; };
+  const PlasticIncrement r = solve_plastic_increment(kTrial, kThreeG, 100e6, flow);
+  EXPECT_NEAR(r.eqps_increment, x_jump, 1e-14);
+  EXPECT_LT(r.evaluations, kReturnMaxEvaluations);
+}
+
+}  // namespace
+}  // namespace coldspray::materials
