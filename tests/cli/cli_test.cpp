@@ -5,12 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "run_command.hpp"
+#include "table.hpp"
 
 namespace coldspray::testing {
 namespace {
@@ -92,31 +94,46 @@ TEST(Cli, RunWithABadCaseWritesNothing) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-// Reads a CSV into a header and rows of numbers.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
-    throw std::runtime_error("no column " + name);
-  }
-};
+TEST(Cli, RunOfOverlappingBodiesIsBadInputAndWritesNothing) {
+  const std::string dir = make_temp_dir();
+  const auto r = run_coldspray("run '" + kData + "/cli/overlap.yaml' --out result", dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("bodies.particle.shape"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("overlaps body 'substrate'"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
 
-Csv read_csv(const fs::path& path) {
-  std::ifstream in(path);
-  Csv csv;
-  std::string line, cell;
-  std::getline(in, line);
-  std::stringstream head(line);
-  while (std::getline(head, cell, ',')) csv.header.push_back(cell);
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::vector<double> values;
-    while (std::getline(row, cell, ',')) values.push_back(std::stod(cell));
-    csv.rows.push_back(values);
-  }
-  return csv;
+TEST(Cli, RunThatLosesAPointStopsWithStatus3AndKeepsALastSnapshot) {
+  const std::string dir = make_temp_dir();
+  const auto r = run_coldspray("run '" + kData + "/cli/escape.yaml' --out result --quiet", dir);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("body 'block'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("left the grid"), std::string::npos) << r.output;
+  const fs::path out = fs::path(dir) / "result";
+  EXPECT_TRUE(fs::exists(out / "snapshots.pvd"));
+  EXPECT_TRUE(fs::exists(out / "case.resolved.yaml"));
+  std::ifstream summary(out / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(summary)), {});
+  EXPECT_NE(text.find("\"status\": \"fault: body 'block'"), std::string::npos) << text;
+}
+
+TEST(Cli, RunWritesTheDocumentedResults) {
+  const std::string dir = make_temp_dir();
+  const auto r = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                                   "/examples/verification/elastic-wave.yaml' --out result --quiet "
+                                   "--set solver.end_time='0.5 ns'",
+                               dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path out = fs::path(dir) / "result";
+  for (const char* f :
+       {"summary.json", "history.csv", "probes.csv", "snapshots.pvd", "case.resolved.yaml"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const Table probes = read_table((out / "probes.csv").string());
+  EXPECT_EQ(probes.header.front(), "time");
+  EXPECT_EQ(probes.header.at(1), "z10.velocity_z");
+  // The resolved echo runs again to the same case.
+  const auto again = run_coldspray("check '" + (out / "case.resolved.yaml").string() + "'", dir);
+  EXPECT_EQ(again.status, 0) << again.output;
 }
 
 TEST(Cli, MaterialTestWritesTheDocumentedColumns) {
@@ -126,7 +143,7 @@ TEST(Cli, MaterialTestWritesTheDocumentedColumns) {
       "--final-strain -0.1 --steps 50 --out cu.csv",
       dir);
   ASSERT_EQ(r.status, 0) << r.output;
-  const Csv csv = read_csv(fs::path(dir) / "cu.csv");
+  const Table csv = read_table((fs::path(dir) / "cu.csv").string());
   const std::vector<std::string> expected = {
       "time",          "strain",      "eqps",      "eqps_rate", "temperature", "melt_temperature",
       "shear_modulus", "flow_stress", "von_mises", "pressure",  "density"};
@@ -158,7 +175,7 @@ TEST(Cli, MaterialTestAlPtwFlowStressAtTheAcceptancePoint) {
       "--final-strain -0.6 --isothermal --steps 1200 --out al.csv",
       dir);
   ASSERT_EQ(r.status, 0) << r.output;
-  const Csv csv = read_csv(fs::path(dir) / "al.csv");
+  const Table csv = read_table((fs::path(dir) / "al.csv").string());
   const auto eqps = csv.column("eqps"), rate = csv.column("eqps_rate");
   const auto flow = csv.column("flow_stress"), vm = csv.column("von_mises");
   const auto temperature = csv.column("temperature"), rho = csv.column("density");
@@ -216,7 +233,7 @@ TEST(Cli, MaterialTestReadsACaseFileMaterial) {
                                    "--strain-rate 1e3 --final-strain 0.2 --out s.csv",
                                dir);
   ASSERT_EQ(r.status, 0) << r.output;
-  const Csv csv = read_csv(fs::path(dir) / "s.csv");
+  const Table csv = read_table((fs::path(dir) / "s.csv").string());
   // von Mises material, yield 50 MPa, no hardening: in shear the von Mises stress is the yield.
   EXPECT_NEAR(csv.rows.back()[csv.column("von_mises")], 50e6, 1e-6 * 50e6);
 }

@@ -1,0 +1,28 @@
+// Per-body measures for summaries and histories.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mpm/state.hpp"
+
+namespace coldspray::metrics {
+
+struct BodyMetrics {
+  std::string name;
+  double mass = 0.0;                   // kg (the ring masses summed, in r-z)
+  std::array<double, 3> velocity{};    // mass-averaged, m/s
+  std::array<double, 3> centroid{};    // mass-averaged, m (x = r in r-z)
+  std::array<double, 3> extent_min{};  // m
+  std::array<double, 3> extent_max{};  // m
+  double max_eqps = 0.0;
+  double mean_eqps = 0.0;                 // mass-averaged
+  double max_temperature = 0.0;           // K
+  std::array<double, 3> contact_force{};  // from all other bodies over the last step, N
+};
+
+// In index order: independent of the thread count.
+std::vector<BodyMetrics> body_metrics(const mpm::State& s);
+
+}  // namespace coldspray::metrics

@@ -1,0 +1,21 @@
+#include "metrics/energy.hpp"
+
+namespace coldspray::metrics {
+
+EnergyBudget energy_budget(const mpm::State& s) {
+  const mpm::Points& P = s.points;
+  EnergyBudget e;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const double v2 = P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
+                      P.velocity[2][p] * P.velocity[2][p];
+    e.kinetic += 0.5 * P.mass[p] * v2;
+    e.internal += P.energy[p] * P.volume0[p];
+    e.plastic_work += P.plastic_work[p];
+    e.viscous += P.viscous_work[p];
+    e.contact -= P.contact_work[p];
+  }
+  for (const mpm::AbsorbingPoint& a : s.absorbing) e.absorbed += a.absorbed;
+  return e;
+}
+
+}  // namespace coldspray::metrics

@@ -1,0 +1,24 @@
+// The energy budget of an MPM run: kinetic + internal + viscous + absorbed + contact must stay
+// equal to the initial total (kinetic + internal at t = 0).
+#pragma once
+
+#include "mpm/state.hpp"
+
+namespace coldspray::metrics {
+
+struct EnergyBudget {
+  double kinetic = 0.0;       // sum 1/2 m v^2, J
+  double internal = 0.0;      // sum E V0 (eqs 3.39-3.41), J
+  double plastic_work = 0.0;  // sum sigma_y d eqps V, J (part of internal)
+  double viscous = 0.0;       // work of the artificial bulk viscosity, J
+  double absorbed = 0.0;      // work done on the absorbing dashpots, J
+  double contact = 0.0;       // kinetic energy the contact corrections took from the points, J
+
+  double elastic() const { return internal - plastic_work; }
+  double total() const { return kinetic + internal + viscous + absorbed + contact; }
+};
+
+// Sums over points in index order, so the result does not depend on the thread count.
+EnergyBudget energy_budget(const mpm::State& s);
+
+}  // namespace coldspray::metrics

@@ -1,0 +1,133 @@
+#include "mpm/contact.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace coldspray::mpm {
+
+using Eigen::Vector3d;
+
+std::int32_t ContactNodes::add(std::size_t node) {
+  if (count_ == node_.size()) grow(std::max<std::size_t>(1024, 2 * node_.size()));
+  const auto s = static_cast<std::int32_t>(count_++);
+  node_[s] = node;
+  body_count_[s] = 0;
+  for (int e = 0; e < kMaxBodiesPerNode; ++e) {
+    const std::size_t f = flat(s, e);
+    mass[f] = 0.0;
+    for (int d = 0; d < 3; ++d)
+      momentum[d][f] = force[d][f] = mass_gradient[d][f] = correction[d][f] = 0.0;
+  }
+  return s;
+}
+
+int ContactNodes::find(std::int32_t s, int b) const {
+  for (int e = 0; e < body_count_[s]; ++e)
+    if (body_[flat(s, e)] == b) return e;
+  return -1;
+}
+
+int ContactNodes::entry(std::int32_t s, int b) {
+  const int found = find(s, b);
+  if (found >= 0) return found;
+  const int e = body_count_[s];
+  if (e == kMaxBodiesPerNode)
+    throw RunFault(
+        fmt::format("more than {} bodies meet at grid node {}", kMaxBodiesPerNode, node_[s]));
+  body_[flat(s, e)] = static_cast<std::int16_t>(b);
+  body_count_[s] = static_cast<std::uint8_t>(e + 1);
+  return e;
+}
+
+void ContactNodes::grow(std::size_t slots) {
+  node_.resize(slots);
+  body_count_.resize(slots);
+  body_.resize(slots * kMaxBodiesPerNode);
+  mass.resize(slots * kMaxBodiesPerNode);
+  for (auto* a : {&momentum, &force, &mass_gradient, &correction})
+    for (auto& v : *a) v.resize(slots * kMaxBodiesPerNode);
+}
+
+namespace {
+
+Vector3d load(const std::array<std::vector<double>, 3>& a, std::size_t f) {
+  return {a[0][f], a[1][f], a[2][f]};
+}
+
+void add_to(std::array<std::vector<double>, 3>& a, std::size_t f, const Vector3d& v) {
+  for (int d = 0; d < 3; ++d) a[d][f] += v[d];
+}
+
+// Which of the two entries supplies the contact normal (thesis §3.5.4).
+bool first_is_master(const ContactNodes& c, const ContactRule& rule, std::size_t f1, std::size_t f2,
+                     int b1, int b2) {
+  switch (rule.normal) {
+    case case_file::ContactNormal::Body:
+      if (b1 == rule.normal_body) return true;
+      if (b2 == rule.normal_body) return false;
+      break;  // neither is the named body: fall back to the maximum volume gradient
+    case case_file::ContactNormal::HighestId:
+      return b1 > b2;
+    case case_file::ContactNormal::MaxGradient:
+      break;
+  }
+  const double g1 = load(c.mass_gradient, f1).norm() / rule.reference_density[b1];
+  const double g2 = load(c.mass_gradient, f2).norm() / rule.reference_density[b2];
+  return g1 >= g2;
+}
+
+}  // namespace
+
+void resolve_contact(ContactNodes& c, const ContactRule& rule,
+                     const std::vector<std::uint8_t>& held, double dt, int bodies,
+                     ContactResult& result) {
+  for (std::size_t s = 0; s < c.size(); ++s) {
+    const auto slot = static_cast<std::int32_t>(s);
+    for (int e1 = 0; e1 < c.body_count(slot); ++e1)
+      for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2) {
+        std::size_t fm = ContactNodes::flat(slot, e1), fs = ContactNodes::flat(slot, e2);
+        int bm = c.body(slot, e1), bs = c.body(slot, e2);
+        if (!first_is_master(c, rule, fm, fs, bm, bs)) {
+          std::swap(fm, fs);
+          std::swap(bm, bs);
+        }
+        const double mm = c.mass[fm], ms = c.mass[fs];
+        Vector3d grad = load(c.mass_gradient, fm);
+        for (int d = 0; d < 3; ++d)
+          if (held[c.node(slot)] & (1u << d)) grad[d] = 0.0;
+        if (mm <= 0.0 || ms <= 0.0 || grad.squaredNorm() == 0.0) continue;
+        // Eq 3.30: sum_p m_p grad N_I(x_p) points from the body's points towards the node, so
+        // at a surface node it is the master body's outward unit normal.
+        const Vector3d n = grad.normalized();
+        const Vector3d pm = load(c.momentum, fm), ps = load(c.momentum, fs);
+        // Eq 3.29: the bodies approach when (m_s p_m - m_m p_s) . n > 0.
+        if ((ms * pm - mm * ps).dot(n) <= 0.0) continue;
+        // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
+        const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
+        const double normal = stick.dot(n);
+        Vector3d dp = normal * n;
+        if (rule.friction > 0.0) {
+          const Vector3d tangential = stick - dp;
+          const double t = tangential.norm(), limit = rule.friction * std::abs(normal);
+          dp += t > limit ? tangential * (limit / t) : tangential;
+        }
+        add_to(c.momentum, fm, dp);
+        add_to(c.momentum, fs, -dp);
+        add_to(c.force, fm, dp / dt);
+        add_to(c.force, fs, -dp / dt);
+        add_to(c.correction, fm, dp);
+        add_to(c.correction, fs, -dp);
+        for (int d = 0; d < 3; ++d) {
+          result.impulse[bm * bodies + bs][d] += dp[d];
+          result.impulse[bs * bodies + bm][d] -= dp[d];
+        }
+      }
+  }
+}
+
+}  // namespace coldspray::mpm

@@ -1,0 +1,46 @@
+// The background grid: a regular lattice of nodes, reset every step (thesis §3.4 step 12).
+// In 3D it has nx * ny * nz nodes; in axisymmetric runs ny = 1 and x is the radius r >= 0.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace coldspray::mpm {
+
+struct GridLayout {
+  std::array<double, 3> origin{};  // position of node (0, 0, 0), m
+  double h = 0.0;                  // cell size, m
+  std::array<int, 3> nodes{};      // node counts per axis
+  bool axisymmetric = false;
+
+  std::size_t node_count() const {
+    return static_cast<std::size_t>(nodes[0]) * nodes[1] * nodes[2];
+  }
+  std::size_t index(int i, int j, int k) const {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(nodes[0]) *
+               (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * k);
+  }
+  double coordinate(int axis, int i) const { return origin[axis] + i * h; }
+  // Upper end of the grid along an axis.
+  double extent(int axis) const { return origin[axis] + (nodes[axis] - 1) * h; }
+};
+
+// Nodal quantities summed over all bodies.
+struct GridFields {
+  std::vector<double> mass;                     // kg
+  std::array<std::vector<double>, 3> momentum;  // kg m/s
+  std::array<std::vector<double>, 3> force;     // N
+  // Which bodies reach a node this step: the first one seen, and whether another one did too.
+  std::vector<std::int32_t> first_body;
+  std::vector<std::uint8_t> shared;
+  // Index of the node's slot in the contact storage, or -1 where only one body has mass.
+  std::vector<std::int32_t> contact_slot;
+
+  void resize(std::size_t n);
+  void clear();  // zero everything for a new step (no allocation)
+};
+
+}  // namespace coldspray::mpm

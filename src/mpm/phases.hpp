@@ -1,0 +1,222 @@
+// The phases of one MUSL step (thesis §3.4), each a loop over points or nodes. Templated on the
+// shape function and on the geometry (3D or axisymmetric r-z) so the inner loops are tight.
+// Point-to-grid phases run slab by slab (State::Slabs) so they are race-free and deterministic;
+// grid-to-point phases write only their own point.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "materials/stress_update.hpp"
+#include "mpm/state.hpp"
+#include "mpm/stencil.hpp"
+
+namespace coldspray::mpm {
+
+// Calls f(p) for every point, even slabs in parallel, then odd slabs.
+template <class F>
+void for_each_point_by_slab(const Slabs& slabs, F&& f) {
+  const long count = static_cast<long>(slabs.begin.size()) - 1;
+  for (long colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long s = colour; s < count; s += 2)
+      for (std::size_t i = slabs.begin[s]; i < slabs.begin[s + 1]; ++i) f(slabs.order[i]);
+  }
+}
+
+// What one point gives the grid: mass, momentum and the force of eqs 3.25-3.26, with the
+// artificial viscous pressure q added to the stress and, in r-z, the hoop-stress term
+// -V sigma_tt N / r of the divergence in cylindrical coordinates.
+template <bool Axisymmetric>
+struct PointContribution {
+  double m, mv[3], Vs[6], fext[3], hoop;
+
+  PointContribution(const State& s, std::size_t p) {
+    const Points& P = s.points;
+    m = P.mass[p];
+    for (int d = 0; d < 3; ++d) {
+      mv[d] = m * P.velocity[d][p];
+      fext[d] = s.external_force[d][p];
+    }
+    const double V = P.volume0[p] * P.J[p];
+    const double q = P.bulk_viscosity[p];
+    for (int c = 0; c < 6; ++c) Vs[c] = V * (P.stress[c][p] - (c < 3 ? q : 0.0));
+    hoop = Axisymmetric ? Vs[kYY] / P.position[0][p] : 0.0;
+  }
+
+  void force(double w, double gx, double gy, double gz, double f[3]) const {
+    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz) - w * hoop;
+    f[1] = w * fext[1] - (Vs[kXY] * gx + Vs[kYY] * gy + Vs[kYZ] * gz);
+    f[2] = w * fext[2] - (Vs[kXZ] * gx + Vs[kYZ] * gy + Vs[kZZ] * gz);
+  }
+};
+
+template <class Shape, bool Axisymmetric>
+Stencil<Shape, Axisymmetric> stencil_at(const State& s, std::size_t p) {
+  Stencil<Shape, Axisymmetric> st;
+  const Points& P = s.points;
+  st.evaluate(s.layout, P, p);
+  return st;
+}
+
+// Steps 1-2 (eqs 3.23-3.27): nodal mass, momentum and force, summed over all bodies; and which
+// bodies reach each node, to find the contact nodes.
+template <class Shape, bool Axisymmetric>
+void map_points_to_grid(State& s) {
+  GridFields& g = s.grid;
+  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const PointContribution<Axisymmetric> c(s, p);
+    const int b = s.points.body[p];
+    st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
+      double f[3];
+      c.force(w, gx, gy, gz, f);
+      g.mass[n] += w * c.m;
+      for (int d = 0; d < 3; ++d) {
+        g.momentum[d][n] += w * c.mv[d];
+        g.force[d][n] += f[d];
+      }
+      if (g.first_body[n] < 0)
+        g.first_body[n] = b;
+      else if (g.first_body[n] != b)
+        g.shared[n] = 1;
+    });
+  });
+}
+
+// The cell a point is in, indexed like the nodes (cell (i,j,k) spans nodes i..i+1, ...).
+inline std::size_t cell_of(const State& s, std::size_t p) {
+  const GridLayout& L = s.layout;
+  int ijk[3];
+  for (int d = 0; d < 3; ++d)
+    ijk[d] = L.nodes[d] == 1
+                 ? 0
+                 : static_cast<int>(std::floor((s.points.position[d][p] - L.origin[d]) / L.h));
+  return L.index(ijk[0], ijk[1], ijk[2]);
+}
+
+// The multi-mesh at contact nodes: the same sums as map_points_to_grid, kept per body, plus
+// each body's mass gradient (eq 3.30), only at the nodes two or more bodies share.
+template <class Shape, bool Axisymmetric>
+void map_bodies_to_contact_nodes(State& s) {
+  if (s.contact.size() == 0) return;
+  ContactNodes& cn = s.contact;
+  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+    if (!s.near_contact[cell_of(s, p)]) return;
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const PointContribution<Axisymmetric> c(s, p);
+    const int b = s.points.body[p];
+    st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
+      const std::int32_t slot = s.grid.contact_slot[n];
+      if (slot < 0) return;
+      const std::size_t e = ContactNodes::flat(slot, cn.entry(slot, b));
+      double f[3];
+      c.force(w, gx, gy, gz, f);
+      const double grad[3] = {gx, gy, gz};
+      cn.mass[e] += w * c.m;
+      for (int d = 0; d < 3; ++d) {
+        cn.momentum[d][e] += w * c.mv[d];
+        cn.force[d][e] += f[d];
+        cn.mass_gradient[d][e] += c.m * grad[d];
+      }
+    });
+  });
+}
+
+// The nodal mass, momentum and force a point of body b sees at node n: its own body's at a
+// contact node, the total elsewhere. Returns false where the node carries no velocity.
+struct NodeView {
+  double m;
+  double p[3];
+  double f[3];
+  double contact[3];  // the momentum contact added this step (0 away from contact nodes)
+};
+
+inline bool node_view(const State& s, std::size_t n, int b, NodeView& v) {
+  const std::int32_t slot = s.grid.contact_slot[n];
+  const int e = slot < 0 ? -1 : s.contact.find(slot, b);
+  if (e < 0) {
+    v.m = s.grid.mass[n];
+    for (int d = 0; d < 3; ++d) {
+      v.p[d] = s.grid.momentum[d][n];
+      v.f[d] = s.grid.force[d][n];
+      v.contact[d] = 0.0;
+    }
+  } else {
+    const std::size_t i = ContactNodes::flat(slot, e);
+    v.m = s.contact.mass[i];
+    for (int d = 0; d < 3; ++d) {
+      v.p[d] = s.contact.momentum[d][i];
+      v.f[d] = s.contact.force[d][i];
+      v.contact[d] = s.contact.correction[d][i];
+    }
+  }
+  return v.m > s.mass_floor;
+}
+
+// Step 7 (eq 3.32): point velocities from the nodal forces; the displacement from the nodal
+// velocities after contact, applied once the strain increment has used the old positions.
+// The work the contact corrections do on the point, m (v + dv/2) . dv_contact, is its share of
+// the step's kinetic-energy change: the contact term of the energy budget.
+template <class Shape, bool Axisymmetric>
+void update_point_velocities(State& s) {
+  Points& P = s.points;
+  const long count = static_cast<long>(P.size());
+  const double dt = s.dt;
+#pragma omp parallel for schedule(static)
+  for (long pi = 0; pi < count; ++pi) {
+    const auto p = static_cast<std::size_t>(pi);
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const int b = P.body[p];
+    double dv[3] = {0, 0, 0}, dx[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};
+    st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
+      NodeView v;
+      if (!node_view(s, n, b, v)) return;
+      for (int d = 0; d < 3; ++d) {
+        dv[d] += w * v.f[d] / v.m * dt;
+        dx[d] += w * v.p[d] / v.m * dt;
+        dv_contact[d] += w * v.contact[d] / v.m;
+      }
+    });
+    for (int d = 0; d < 3; ++d) {
+      P.contact_work[p] += P.mass[p] * (P.velocity[d][p] + 0.5 * dv[d]) * dv_contact[d];
+      P.velocity[d][p] += dv[d];
+      P.displacement[d][p] = dx[d];
+    }
+  }
+}
+
+// Step 8 (eq 3.33, the MUSL re-map): nodal momenta again from the updated point velocities,
+// total and per body at contact nodes.
+template <class Shape, bool Axisymmetric>
+void remap_momentum(State& s) {
+  GridFields& g = s.grid;
+  ContactNodes& cn = s.contact;
+  for (auto& a : g.momentum) std::fill(a.begin(), a.end(), 0.0);
+  const std::size_t used = cn.size() * kMaxBodiesPerNode;
+  for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
+  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const Points& P = s.points;
+    const int b = P.body[p];
+    const double m = P.mass[p];
+    const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
+    st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
+      for (int d = 0; d < 3; ++d) g.momentum[d][n] += w * m * v[d];
+      const std::int32_t slot = g.contact_slot[n];
+      if (slot < 0) return;
+      // Every point near a contact node got its entry in map_bodies_to_contact_nodes.
+      const std::size_t e = ContactNodes::flat(slot, cn.find(slot, b));
+      for (int d = 0; d < 3; ++d) cn.momentum[d][e] += w * m * v[d];
+    });
+  });
+}
+
+// Steps 9-11 (eqs 3.34-3.36, Appendix A) for the points of one body: velocity gradient from the
+// nodal velocities, density, artificial viscosity, the material's stress update; then the
+// position update. Returns the largest c + |v| of the body's points.
+template <class Shape, bool Axisymmetric>
+double update_body_stress(State& s, const BodyRange& body);
+
+}  // namespace coldspray::mpm

@@ -1,0 +1,55 @@
+// The material points of all bodies, as structure of arrays (one array per quantity), so the
+// step's loops stream through memory. Points are stored body after body: each body's points are
+// one contiguous range, which lets the stress update dispatch on the material once per body.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace coldspray::mpm {
+
+// Components of a symmetric tensor in the order xx, yy, zz, xy, yz, xz. In axisymmetric runs
+// x is r, y is the hoop direction theta and z the axis.
+enum SymmetricComponent { kXX = 0, kYY, kZZ, kXY, kYZ, kXZ };
+
+struct Points {
+  // Kinematics.
+  std::array<std::vector<double>, 3> position;  // m
+  std::array<std::vector<double>, 3> velocity;  // m/s
+  std::vector<double> mass;                     // kg, constant
+  std::vector<double> volume0;                  // m^3, reference volume (ring volume in r-z)
+  // GIMP particle half-widths along x, y, z, m: half the spacing at t = 0, then stretched with
+  // the material along each axis (the axis-aligned form of convected-domain GIMP).
+  std::array<std::vector<double>, 3> half_width;
+
+  // Material state (materials::PointState, spread over arrays).
+  std::array<std::vector<double>, 6> stress;  // Cauchy, Pa, tension positive
+  std::vector<double> eqps;
+  std::vector<double> eqps_rate;         // 1/s
+  std::vector<double> temperature;       // K
+  std::vector<double> energy;            // internal energy per reference volume, J/m^3
+  std::vector<double> J;                 // V/V0
+  std::vector<double> flow_stress;       // Pa
+  std::vector<double> shear_modulus;     // Pa
+  std::vector<double> melt_temperature;  // K
+  std::vector<double> pressure;          // Pa, compression positive (EOS)
+
+  // Bookkeeping.
+  std::vector<double> sound_speed;     // longitudinal wave speed after the last update, m/s
+  std::vector<double> bulk_viscosity;  // artificial viscous pressure q of the last step, Pa
+  std::vector<double> plastic_work;    // accumulated plastic work, J
+  std::vector<double> viscous_work;    // accumulated work of the bulk viscosity, J
+  std::vector<double> contact_work;    // accumulated work of the contact corrections, J
+  std::vector<std::uint16_t> body;     // index into the run's body list
+  std::vector<std::uint8_t> surface;   // 1 on the body's initial surface (bonding set S)
+
+  // Per-step scratch, kept here so the step loop allocates nothing.
+  std::array<std::vector<double>, 3> displacement;  // x^{k+1} - x^k from the grid velocities
+
+  std::size_t size() const { return mass.size(); }
+  void resize(std::size_t n);
+};
+
+}  // namespace coldspray::mpm

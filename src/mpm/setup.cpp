@@ -1,0 +1,326 @@
+#include "mpm/setup.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "geometry/seeding.hpp"
+#include "materials/stress_update.hpp"
+#include "mpm/material_state.hpp"
+#include "mpm/stencil.hpp"
+
+namespace coldspray::mpm {
+
+namespace {
+
+using case_file::Vec3;
+
+std::string body_key(const case_file::Body& b, const char* field) {
+  return fmt::format("bodies.{}.{}", b.name, field);
+}
+
+struct Seeded {
+  geometry::SeededPoints points;
+  double spacing = 0.0;
+  Vec3 min, max;  // bounds of the points' domains (position +- spacing/2)
+};
+
+// Places the grid. The domain is grid.min..grid.max, or the bodies' bounds plus a margin, with
+// its faces on multiples of the cell size so that the points' lattice (anchored at 0) lines up
+// with the cells. One layer of ghost nodes lies outside every face: a GIMP support reaches a
+// node beyond the point's cell, and bodies may fill the domain up to a fixed or roller face.
+// In r-z the domain starts at the axis r = 0.
+GridLayout place_grid(const case_file::Case& c, const std::vector<Seeded>& seeded) {
+  const double h = c.grid.cell_size;
+  const bool axi = c.solver.geometry == case_file::Geometry::Axisymmetric;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 hi = -lo;
+  for (const Seeded& s : seeded) {
+    lo = lo.cwiseMin(s.min);
+    hi = hi.cwiseMax(s.max);
+  }
+  if (c.grid.min) {
+    lo = *c.grid.min;
+    hi = *c.grid.max;
+  } else {
+    const Vec3 margin =
+        (kGridMarginFraction * (hi - lo)).cwiseMax(Vec3::Constant(kGridMarginMinCells * h));
+    lo -= margin;
+    hi += margin;
+  }
+  if (axi) lo[0] = 0.0;
+  GridLayout g;
+  g.h = h;
+  g.axisymmetric = axi;
+  for (int d = 0; d < 3; ++d) {
+    const double first = std::floor(lo[d] / h + 1e-9) * h;
+    const double last = std::ceil(hi[d] / h - 1e-9) * h;
+    g.origin[d] = first - h;
+    g.nodes[d] = static_cast<int>(std::lround((last - first) / h)) + 3;
+  }
+  if (axi) {
+    g.origin[1] = 0.0;
+    g.nodes[1] = 1;
+  }
+  return g;
+}
+
+void check_inside_grid(const case_file::Case& c, const std::vector<Seeded>& seeded,
+                       const GridLayout& g) {
+  for (std::size_t b = 0; b < seeded.size(); ++b)
+    for (int d = 0; d < 3; ++d) {
+      if (g.nodes[d] == 1) continue;
+      const double tolerance = 1e-9 * g.h;
+      if (seeded[b].min[d] < g.origin[d] + g.h - tolerance ||
+          seeded[b].max[d] > g.extent(d) - g.h + tolerance)
+        throw InputError(c.source_file, "grid.min",
+                         fmt::format("body '{}' reaches outside the grid along {}: enlarge "
+                                     "grid.min/grid.max",
+                                     c.bodies[b].name, "xyz"[d]));
+    }
+}
+
+// A body may cross a fixed or roller face of the grid: such a face is a symmetry plane (a
+// quarter of a Taylor bar, half of a plate) and the body is cut there.
+void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
+                            std::vector<Seeded>& seeded) {
+  for (std::size_t b = 0; b < seeded.size(); ++b) {
+    Seeded& sd = seeded[b];
+    geometry::SeededPoints kept;
+    for (std::size_t i = 0; i < sd.points.position.size(); ++i) {
+      const Vec3& x = sd.points.position[i];
+      bool inside = true;
+      for (const auto& [face, condition] : c.grid.faces) {
+        if (condition == case_file::FaceCondition::Free) continue;
+        const int axis = static_cast<int>(face) / 2;
+        if (g.nodes[axis] == 1) continue;
+        const bool at_max = static_cast<int>(face) % 2 == 1;
+        inside =
+            inside && (at_max ? x[axis] <= g.extent(axis) - g.h : x[axis] >= g.origin[axis] + g.h);
+      }
+      if (!inside) continue;
+      kept.position.push_back(x);
+      kept.volume.push_back(sd.points.volume[i]);
+      kept.outside.push_back(sd.points.outside[i]);
+    }
+    if (kept.position.empty())
+      throw InputError(c.source_file, body_key(c.bodies[b], "shape"),
+                       fmt::format("body '{}' lies outside the grid", c.bodies[b].name));
+    sd.points = std::move(kept);
+    sd.min = Vec3::Constant(std::numeric_limits<double>::max());
+    sd.max = -sd.min;
+    for (const Vec3& x : sd.points.position) {
+      sd.min = sd.min.cwiseMin(x - Vec3::Constant(0.5 * sd.spacing));
+      sd.max = sd.max.cwiseMax(x + Vec3::Constant(0.5 * sd.spacing));
+    }
+  }
+}
+
+void check_no_overlap(const case_file::Case& c, const std::vector<Seeded>& seeded) {
+  for (std::size_t a = 0; a < seeded.size(); ++a)
+    for (std::size_t b = 0; b < seeded.size(); ++b) {
+      if (a == b) continue;
+      for (const Vec3& x : seeded[a].points.position)
+        if (geometry::contains(c.bodies[b].shape, x))
+          throw InputError(c.source_file, body_key(c.bodies[a], "shape"),
+                           fmt::format("body '{}' overlaps body '{}' at t = 0", c.bodies[a].name,
+                                       c.bodies[b].name));
+    }
+}
+
+// The holds of the grid faces, on the face's node layer and the ghost layer beyond it, and in
+// r-z the axis: no radial velocity at r <= 0.
+void constrain_grid_faces(const case_file::Case& c, State& s) {
+  const GridLayout& L = s.layout;
+  for (const auto& [face, condition] : c.grid.faces) {
+    if (condition == case_file::FaceCondition::Free) continue;
+    const int axis = static_cast<int>(face) / 2;
+    const bool at_max = static_cast<int>(face) % 2 == 1;
+    if (L.nodes[axis] == 1) continue;
+    const int face_layer = at_max ? L.nodes[axis] - 2 : 1;
+    const int ghost_layer = at_max ? L.nodes[axis] - 1 : 0;
+    const std::uint8_t held = condition == case_file::FaceCondition::Fixed
+                                  ? (kHoldX | kHoldY | kHoldZ)
+                                  : static_cast<std::uint8_t>(1u << axis);
+    for (int k = 0; k < L.nodes[2]; ++k)
+      for (int j = 0; j < L.nodes[1]; ++j)
+        for (int i = 0; i < L.nodes[0]; ++i) {
+          const int ijk[3] = {i, j, k};
+          if (ijk[axis] == face_layer || ijk[axis] == ghost_layer)
+            s.constraint[L.index(i, j, k)] |= held;
+        }
+  }
+  if (L.axisymmetric)
+    for (int k = 0; k < L.nodes[2]; ++k)
+      for (int i = 0; i <= 1; ++i) s.constraint[L.index(i, 0, k)] |= kHoldX;
+}
+
+// OutsideNeighbour bits that make a point part of a named face.
+std::uint8_t face_bits(case_file::BodyFace f) {
+  using namespace geometry;
+  switch (f) {
+    case case_file::BodyFace::Bottom:
+      return kMinusZ;
+    case case_file::BodyFace::Top:
+      return kPlusZ;
+    case case_file::BodyFace::Side:
+      return kMinusX | kPlusX | kMinusY | kPlusY;
+  }
+  return 0;
+}
+
+std::uint8_t faces_bits(const std::vector<case_file::BodyFace>& faces) {
+  std::uint8_t bits = 0;
+  for (auto f : faces) bits |= face_bits(f);
+  return bits;
+}
+
+// Fixed faces hold every node the face's points reach.
+template <class Shape, bool Axisymmetric>
+void hold_nodes_of_point(State& s, std::size_t p) {
+  Stencil<Shape, Axisymmetric> st;
+  const Points& P = s.points;
+  st.evaluate(s.layout, P, p);
+  st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
+    if (w > 0.0) s.constraint[n] = kHoldX | kHoldY | kHoldZ;
+  });
+}
+
+void hold_fixed_point(State& s, std::size_t p) {
+  const bool axi = s.layout.axisymmetric;
+  if (s.shape_function == case_file::ShapeFunction::Gimp)
+    axi ? hold_nodes_of_point<GimpShape, true>(s, p) : hold_nodes_of_point<GimpShape, false>(s, p);
+  else
+    axi ? hold_nodes_of_point<LinearShape, true>(s, p)
+        : hold_nodes_of_point<LinearShape, false>(s, p);
+}
+
+// Eqs 3.45-3.46 with a = b = 1: along the face normal a dashpot rho c_p per unit area, along
+// the face's tangents rho c_s. A point with outside neighbours along several axes (an edge)
+// adds up one face area per such neighbour.
+AbsorbingPoint absorbing_point(const BodyRange& body, std::size_t p, const Points& P,
+                               std::uint8_t outside, bool axi) {
+  const materials::Material& m = body.material;
+  const double rho = m.density, G = m.elastic.shear_modulus, K = m.elastic.bulk_modulus;
+  const double cp = std::sqrt((K + 4.0 / 3.0 * G) / rho), cs = std::sqrt(G / rho);
+  const double s = body.spacing;
+  const double face_area = axi ? 2.0 * std::numbers::pi * P.position[0][p] * s : s * s;
+  double area[3] = {0, 0, 0};
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side)
+      if (outside & (1u << (2 * axis + side))) area[axis] += face_area;
+  const double total = area[0] + area[1] + area[2];
+  AbsorbingPoint a;
+  a.point = p;
+  for (int d = 0; d < 3; ++d) a.damping[d] = rho * (cp * area[d] + cs * (total - area[d]));
+  if (axi) a.damping[1] = 0.0;  // no hoop motion in r-z
+  return a;
+}
+
+}  // namespace
+
+State build_state(const case_file::Case& c) {
+  State s;
+  s.geometry = c.solver.geometry;
+  s.shape_function = c.solver.shape_function;
+  s.viscosity = c.solver.artificial_viscosity;
+  const bool axi = c.solver.geometry == case_file::Geometry::Axisymmetric;
+
+  std::vector<Seeded> seeded;
+  for (const case_file::Body& b : c.bodies) {
+    Seeded sd;
+    sd.spacing = b.spacing;
+    sd.points = geometry::seed(b.shape, geometry::Lattice{Vec3::Zero(), b.spacing, axi});
+    if (sd.points.position.empty())
+      throw InputError(
+          c.source_file, body_key(b, "spacing"),
+          fmt::format("body '{}' has no points: its spacing is larger than its shape", b.name));
+    sd.min = Vec3::Constant(std::numeric_limits<double>::max());
+    sd.max = -sd.min;
+    for (const Vec3& x : sd.points.position) {
+      sd.min = sd.min.cwiseMin(x - Vec3::Constant(0.5 * b.spacing));
+      sd.max = sd.max.cwiseMax(x + Vec3::Constant(0.5 * b.spacing));
+    }
+    seeded.push_back(std::move(sd));
+  }
+  check_no_overlap(c, seeded);
+  s.layout = place_grid(c, seeded);
+  clip_at_symmetry_faces(c, s.layout, seeded);
+  check_inside_grid(c, seeded, s.layout);
+
+  std::size_t total = 0;
+  for (const Seeded& sd : seeded) total += sd.points.position.size();
+  Points& P = s.points;
+  P.resize(total);
+  std::size_t p = 0;
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    const case_file::Body& body = c.bodies[b];
+    BodyRange range{body.name, p, p + seeded[b].points.position.size(),
+                    c.materials.at(body.material), body.spacing};
+    const materials::PointState initial =
+        materials::initial_state(range.material, body.temperature);
+    const double c0 = materials::wave_speed(range.material, initial);
+    for (std::size_t i = 0; i < seeded[b].points.position.size(); ++i, ++p) {
+      for (int d = 0; d < 3; ++d) {
+        P.position[d][p] = seeded[b].points.position[i][d];
+        P.velocity[d][p] = body.velocity[d];
+      }
+      P.volume0[p] = seeded[b].points.volume[i];
+      P.mass[p] = range.material.density * P.volume0[p];
+      for (int d = 0; d < 3; ++d) P.half_width[d][p] = 0.5 * body.spacing;
+      store_point_state(initial, P, p);
+      P.sound_speed[p] = c0;
+      P.body[p] = static_cast<std::uint16_t>(b);
+      P.surface[p] = seeded[b].points.outside[i] != 0;
+    }
+    s.bodies.push_back(std::move(range));
+  }
+
+  s.grid.resize(s.layout.node_count());
+  s.constraint.assign(s.layout.node_count(), 0);
+  s.near_contact.assign(s.layout.node_count(), 0);
+  constrain_grid_faces(c, s);
+  for (auto& f : s.external_force) f.assign(total, 0.0);
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    const std::uint8_t fixed = faces_bits(c.bodies[b].fixed);
+    const std::uint8_t absorbing = faces_bits(c.bodies[b].absorbing);
+    for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i) {
+      const std::size_t q = s.bodies[b].begin + i;
+      const std::uint8_t outside = seeded[b].points.outside[i];
+      if (outside & fixed) hold_fixed_point(s, q);
+      if (outside & absorbing)
+        s.absorbing.push_back(absorbing_point(s.bodies[b], q, P, outside & absorbing, axi));
+    }
+  }
+
+  s.slabs.order.resize(total);
+  s.slabs.slab_of.resize(total);
+  s.slabs.begin.resize(static_cast<std::size_t>(s.layout.nodes[2] / Slabs::kSlabCells) + 3);
+
+  s.contact_rule.normal = c.contact.normal;
+  s.contact_rule.friction = c.contact.friction;
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
+    if (c.contact.normal == case_file::ContactNormal::Body &&
+        c.bodies[b].name == c.contact.normal_body)
+      s.contact_rule.normal_body = static_cast<int>(b);
+  }
+  s.contact_result.impulse.assign(c.bodies.size() * c.bodies.size(), {0.0, 0.0, 0.0});
+
+  double min_mass = std::numeric_limits<double>::max();
+  for (std::size_t q = 0; q < total; ++q) {
+    min_mass = std::min(min_mass, P.mass[q]);
+    const double speed =
+        std::sqrt(P.velocity[0][q] * P.velocity[0][q] + P.velocity[1][q] * P.velocity[1][q] +
+                  P.velocity[2][q] * P.velocity[2][q]);
+    s.max_signal_speed = std::max(s.max_signal_speed, P.sound_speed[q] + speed);
+  }
+  s.mass_floor = 1e-10 * min_mass;
+  return s;
+}
+
+}  // namespace coldspray::mpm

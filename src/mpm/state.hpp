@@ -1,0 +1,84 @@
+// Everything an MPM run carries from step to step. Built once by setup (mpm/setup.hpp); the
+// step (mpm/stepper.hpp) only reads and writes it, allocating nothing.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "case/case.hpp"
+#include "materials/material.hpp"
+#include "mpm/contact.hpp"
+#include "mpm/grid.hpp"
+#include "mpm/points.hpp"
+
+namespace coldspray::mpm {
+
+struct BodyRange {
+  std::string name;
+  std::size_t begin = 0;  // the body's points are [begin, end)
+  std::size_t end = 0;
+  materials::Material material;
+  double spacing = 0.0;
+};
+
+// A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give
+// it the force -damping[a] * v_a along each axis a.
+struct AbsorbingPoint {
+  std::size_t point = 0;
+  std::array<double, 3> damping{};  // N s/m
+  double absorbed = 0.0;            // work done on the dashpots so far, J
+};
+
+// Bits of State::constraint: the velocity components held at zero at a node.
+enum NodeConstraint : std::uint8_t { kHoldX = 1, kHoldY = 2, kHoldZ = 4 };
+
+// Points binned into slabs of kSlabCells cell layers along z. A point's support reaches one
+// node below its cell and two above, so slabs two apart never share a node: all even slabs can
+// scatter to the grid at once, then all odd ones. The order is fixed, whatever the threads.
+struct Slabs {
+  static constexpr int kSlabCells = 3;
+  std::vector<std::uint32_t> order;    // point indices, by slab, ascending within a slab
+  std::vector<std::size_t> begin;      // slab s is order[begin[s] .. begin[s+1])
+  std::vector<std::uint32_t> slab_of;  // scratch: each point's slab
+};
+
+// A fault found during a step: the lowest point index at fault, so the report is the same
+// whatever the threads.
+struct Fault {
+  std::size_t point = std::numeric_limits<std::size_t>::max();
+  std::string cause;
+};
+
+struct State {
+  case_file::Geometry geometry = case_file::Geometry::ThreeD;
+  case_file::ShapeFunction shape_function = case_file::ShapeFunction::Gimp;
+  case_file::ArtificialViscosity viscosity;
+
+  GridLayout layout;
+  GridFields grid;
+  std::vector<std::uint8_t> constraint;    // NodeConstraint bits per node
+  std::vector<std::uint8_t> near_contact;  // per cell: a contact node is within its stencil
+
+  Points points;
+  std::vector<BodyRange> bodies;
+  std::vector<AbsorbingPoint> absorbing;
+  std::array<std::vector<double>, 3> external_force;  // per point, N (dashpots)
+  Slabs slabs;
+
+  ContactNodes contact;
+  ContactRule contact_rule;
+  ContactResult contact_result;  // of the last step
+
+  double time = 0.0;
+  double dt = 0.0;
+  long step = 0;
+  double max_signal_speed = 0.0;  // max over points of c + |v| after the last stress update
+  double mass_floor = 0.0;        // nodes lighter than this carry no velocity, kg
+  Fault fault;
+};
+
+}  // namespace coldspray::mpm

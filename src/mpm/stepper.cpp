@@ -1,0 +1,222 @@
+#include "mpm/stepper.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "materials/model_dispatch.hpp"
+#include "materials/stress_update_kernel.hpp"
+#include "mpm/artificial_viscosity.hpp"
+#include "mpm/boundaries.hpp"
+#include "mpm/material_state.hpp"
+#include "mpm/phases.hpp"
+
+namespace coldspray::mpm {
+
+namespace {
+
+// Bins the points into z slabs, stable in the point index: the order every point-to-grid phase
+// scatters in, and so the order of every nodal sum.
+void bin_points_into_slabs(State& s) {
+  Slabs& sl = s.slabs;
+  const std::size_t n = s.points.size();
+  const double inv = 1.0 / (s.layout.h * Slabs::kSlabCells);
+  std::fill(sl.begin.begin(), sl.begin.end(), 0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const auto slab =
+        static_cast<std::uint32_t>((s.points.position[2][p] - s.layout.origin[2]) * inv);
+    sl.slab_of[p] = slab;
+    ++sl.begin[slab + 1];
+  }
+  for (std::size_t k = 1; k < sl.begin.size(); ++k) sl.begin[k] += sl.begin[k - 1];
+  // begin[] doubles as the insertion cursor, then is shifted back.
+  for (std::size_t p = 0; p < n; ++p)
+    sl.order[sl.begin[sl.slab_of[p]]++] = static_cast<std::uint32_t>(p);
+  for (std::size_t k = sl.begin.size() - 1; k > 0; --k) sl.begin[k] = sl.begin[k - 1];
+  sl.begin[0] = 0;
+}
+
+// The nodes two or more bodies reach get a contact slot; the cells whose points can reach such
+// a node are flagged, so the body-wise mapping skips every other point.
+void find_contact_nodes(State& s) {
+  s.contact.clear();
+  std::fill(s.near_contact.begin(), s.near_contact.end(), 0);
+  const GridLayout& L = s.layout;
+  const int reach_y = L.axisymmetric ? 0 : 1;
+  for (std::size_t n = 0; n < L.node_count(); ++n) {
+    if (!s.grid.shared[n]) continue;
+    s.grid.contact_slot[n] = s.contact.add(n);
+    const int i = static_cast<int>(n % L.nodes[0]);
+    const int j = static_cast<int>((n / L.nodes[0]) % L.nodes[1]);
+    const int k = static_cast<int>(n / (static_cast<std::size_t>(L.nodes[0]) * L.nodes[1]));
+    for (int ck = std::max(k - 2, 0); ck <= std::min(k + 1, L.nodes[2] - 1); ++ck)
+      for (int cj = std::max(j - 2 * reach_y, 0); cj <= std::min(j + reach_y, L.nodes[1] - 1); ++cj)
+        for (int ci = std::max(i - 2, 0); ci <= std::min(i + 1, L.nodes[0] - 1); ++ci)
+          s.near_contact[L.index(ci, cj, ck)] = 1;
+  }
+}
+
+// Step 3 (eq 3.28): p += f dt at every node, total and per body; then the essential boundary
+// conditions, on momentum and force alike so constrained nodes neither move nor accelerate.
+void integrate_grid_momentum(State& s) {
+  GridFields& g = s.grid;
+  const long nodes = static_cast<long>(s.layout.node_count());
+  const double dt = s.dt;
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nodes; ++n)
+    for (int d = 0; d < 3; ++d) g.momentum[d][n] += g.force[d][n] * dt;
+  ContactNodes& c = s.contact;
+  for (std::size_t slot = 0; slot < c.size(); ++slot)
+    for (int e = 0; e < c.body_count(static_cast<std::int32_t>(slot)); ++e) {
+      const std::size_t f = ContactNodes::flat(static_cast<std::int32_t>(slot), e);
+      for (int d = 0; d < 3; ++d) c.momentum[d][f] += c.force[d][f] * dt;
+    }
+  apply_node_constraints(s, /*force_too=*/true);
+}
+
+void check_point(const State& s, std::size_t p, Fault& fault) {
+  const Points& P = s.points;
+  const GridLayout& L = s.layout;
+  const char* cause = nullptr;
+  for (int d = 0; d < 3 && cause == nullptr; ++d)
+    if (!std::isfinite(P.position[d][p]) || !std::isfinite(P.velocity[d][p]) ||
+        !std::isfinite(P.stress[d][p]))
+      cause = "non-finite position, velocity or stress";
+  for (int d = 0; d < 3 && cause == nullptr; ++d) {
+    if (L.nodes[d] == 1) continue;
+    // The domain: inside the ghost layer (mpm/setup.cpp).
+    const double lo = L.origin[d] + L.h, hi = L.extent(d) - L.h;
+    if (P.position[d][p] < lo || P.position[d][p] > hi) cause = "left the grid";
+  }
+  if (L.axisymmetric && cause == nullptr && P.position[0][p] <= 0.0)
+    cause = "crossed the axis r = 0";
+  if (cause == nullptr) return;
+#pragma omp critical(coldspray_fault)
+  if (p < fault.point) {
+    fault.point = p;
+    fault.cause = cause;
+  }
+}
+
+}  // namespace
+
+// Steps 9-11 for one body (eqs 3.34-3.36, Appendix A).
+template <class Shape, bool Axisymmetric>
+double update_body_stress(State& s, const BodyRange& body) {
+  Points& P = s.points;
+  const double dt = s.dt;
+  const int b = static_cast<int>(&body - s.bodies.data());
+  double max_speed = 0.0;
+  materials::visit_models(body.material, [&](const auto& models) {
+    const long begin = static_cast<long>(body.begin), end = static_cast<long>(body.end);
+#pragma omp parallel for schedule(static) reduction(max : max_speed)
+    for (long pi = begin; pi < end; ++pi) {
+      const auto p = static_cast<std::size_t>(pi);
+      const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+      // Eqs 3.34-3.35: L = sum_I v_I (x) grad N_I, with v_I = p_I / m_I of the point's body.
+      Eigen::Matrix3d L = Eigen::Matrix3d::Zero();
+      double radial_velocity = 0.0;
+      st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
+        NodeView v;
+        if (!node_view(s, n, b, v)) return;
+        const double grad[3] = {gx, gy, gz};
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) L(i, j) += v.p[i] / v.m * grad[j];
+        radial_velocity += w * v.p[0] / v.m;
+      });
+      // In r-z the hoop strain rate is v_r / r.
+      if constexpr (Axisymmetric) L(1, 1) = radial_velocity / P.position[0][p];
+
+      materials::StepKinematics k;
+      k.strain_increment = 0.5 * (L + L.transpose()) * dt;
+      k.spin_increment = 0.5 * (L - L.transpose()) * dt;
+      k.dt = dt;
+      k.J_new = P.J[p] * (1.0 + k.strain_increment.trace());  // eq 3.36
+
+      // Artificial bulk viscosity on the step's volumetric rate, and its work.
+      const double rho_new = body.material.density / k.J_new;
+      const double q =
+          bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], L.trace());
+      P.bulk_viscosity[p] = q;
+      P.viscous_work[p] -= q * L.trace() * dt * P.volume0[p] * k.J_new;
+
+      materials::PointState state = load_point_state(P, p);
+      const double eqps_before = state.eqps;
+      materials::update_point(models, k, materials::UpdateOptions{}, state);
+      store_point_state(state, P, p);
+      if (state.eqps > eqps_before)
+        P.plastic_work[p] +=
+            state.flow_stress * (state.eqps - eqps_before) * P.volume0[p] * state.J;
+      P.sound_speed[p] = materials::point_wave_speed(models, state);
+
+      for (int d = 0; d < 3; ++d) {
+        P.position[d][p] += P.displacement[d][p];
+        P.half_width[d][p] *= 1.0 + k.strain_increment(d, d);
+      }
+      const double speed =
+          std::sqrt(P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
+                    P.velocity[2][p] * P.velocity[2][p]);
+      max_speed = std::max(max_speed, P.sound_speed[p] + speed);
+      check_point(s, p, s.fault);
+    }
+  });
+  return max_speed;
+}
+
+double stable_time_step(const State& s, double cfl) {
+  return cfl * s.layout.h / s.max_signal_speed;
+}
+
+namespace {
+
+template <class Shape, bool Axisymmetric>
+void musl_step(State& s) {
+  bin_points_into_slabs(s);
+  s.grid.clear();
+  apply_absorbing_dashpots(s);                              // external force, eq 3.46
+  map_points_to_grid<Shape, Axisymmetric>(s);               // steps 1-2, eqs 3.23-3.27
+  find_contact_nodes(s);                                    // multi-mesh at contact nodes
+  map_bodies_to_contact_nodes<Shape, Axisymmetric>(s);      //   body-wise m, p, f, grad m
+  integrate_grid_momentum(s);                               // step 3, eq 3.28
+  resolve_contact(s.contact, s.contact_rule, s.constraint,  // steps 4-6, eqs 3.29-3.31
+                  s.dt, static_cast<int>(s.bodies.size()), s.contact_result);
+  apply_node_constraints(s, /*force_too=*/true);    //   held nodes stay held
+  update_point_velocities<Shape, Axisymmetric>(s);  // step 7, eq 3.32
+  remap_momentum<Shape, Axisymmetric>(s);           // step 8, eq 3.33 (MUSL)
+  apply_node_constraints(s, /*force_too=*/false);   //   with the essential BCs
+  double max_speed = 0.0;                           // steps 9-11, eqs 3.34-3.36
+  for (const BodyRange& body : s.bodies)            //   and Appendix A
+    max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
+  s.max_signal_speed = max_speed;
+  s.time += s.dt;  // step 12: the grid is reset
+  ++s.step;        //   by the next step's clear
+}
+
+}  // namespace
+
+void step(State& s) {
+  for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
+  const bool axi = s.geometry == case_file::Geometry::Axisymmetric;
+  const bool gimp = s.shape_function == case_file::ShapeFunction::Gimp;
+  if (gimp && axi)
+    musl_step<GimpShape, true>(s);
+  else if (gimp)
+    musl_step<GimpShape, false>(s);
+  else if (axi)
+    musl_step<LinearShape, true>(s);
+  else
+    musl_step<LinearShape, false>(s);
+  if (s.fault.point != std::numeric_limits<std::size_t>::max()) {
+    const std::size_t p = s.fault.point;
+    const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),
+                                   [p](const BodyRange& b) { return p >= b.begin && p < b.end; });
+    throw RunFault(fmt::format(
+        "body '{}', point {} at ({:.4g}, {:.4g}, {:.4g}) um, t = {:.6g} ns: {}", body->name,
+        p - body->begin, s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
+        s.points.position[2][p] * 1e6, s.time * 1e9, s.fault.cause));
+  }
+}
+
+}  // namespace coldspray::mpm

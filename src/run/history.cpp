@@ -1,0 +1,28 @@
+#include "run/history.hpp"
+
+#include <fmt/format.h>
+
+namespace coldspray::run {
+
+HistoryWriter::HistoryWriter(const mpm::State& s, const std::filesystem::path& path) : out_(path) {
+  out_ << "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,total";
+  for (const auto& b : s.bodies)
+    for (const char* q : {"vx", "vy", "vz", "contact_fx", "contact_fy", "contact_fz"})
+      out_ << fmt::format(",{}.{}", b.name, q);
+  out_ << "\n";
+}
+
+void HistoryWriter::record(double time, const metrics::EnergyBudget& e,
+                           const std::vector<metrics::BodyMetrics>& bodies) {
+  out_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", time,
+                      e.kinetic, e.elastic(), e.plastic_work, e.viscous, e.absorbed, e.contact,
+                      e.total());
+  for (const auto& b : bodies)
+    out_ << fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", b.velocity[0],
+                        b.velocity[1], b.velocity[2], b.contact_force[0], b.contact_force[1],
+                        b.contact_force[2]);
+  out_ << "\n";
+  out_.flush();
+}
+
+}  // namespace coldspray::run

@@ -1,0 +1,23 @@
+// history.csv: the energy budget and each body's velocity and contact force over time.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+
+#include "metrics/body_metrics.hpp"
+#include "metrics/energy.hpp"
+#include "mpm/state.hpp"
+
+namespace coldspray::run {
+
+class HistoryWriter {
+ public:
+  HistoryWriter(const mpm::State& s, const std::filesystem::path& path);
+  void record(double time, const metrics::EnergyBudget& e,
+              const std::vector<metrics::BodyMetrics>& bodies);
+
+ private:
+  std::ofstream out_;
+};
+
+}  // namespace coldspray::run

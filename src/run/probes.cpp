@@ -1,0 +1,89 @@
+#include "run/probes.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace coldspray::run {
+
+namespace {
+
+constexpr std::array<const char*, 14> kFields = {
+    "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
+    "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
+
+std::size_t nearest_point(const mpm::State& s, const case_file::Vec3& x) {
+  const mpm::Points& P = s.points;
+  std::size_t best = 0;
+  double best_d2 = std::numeric_limits<double>::max();
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    double d2 = 0.0;
+    for (int d = 0; d < 3; ++d) d2 += (P.position[d][p] - x[d]) * (P.position[d][p] - x[d]);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = p;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+int probe_field_index(const std::string& name) {
+  for (std::size_t i = 0; i < kFields.size(); ++i)
+    if (name == kFields[i]) return static_cast<int>(i);
+  return -1;
+}
+
+double probe_value(const mpm::State& s, std::size_t p, int field) {
+  using namespace mpm;
+  const Points& P = s.points;
+  switch (field) {
+    case 0:
+      return P.pressure[p];
+    case 1: {
+      const double mean = (P.stress[kXX][p] + P.stress[kYY][p] + P.stress[kZZ][p]) / 3.0;
+      double sum = 0.0;
+      for (int c = 0; c < 3; ++c) sum += (P.stress[c][p] - mean) * (P.stress[c][p] - mean);
+      for (int c = 3; c < 6; ++c) sum += 2.0 * P.stress[c][p] * P.stress[c][p];
+      return std::sqrt(1.5 * sum);
+    }
+    case 2:
+      return s.bodies[P.body[p]].material.density / P.J[p];
+    case 3:
+      return P.temperature[p];
+    case 4:
+      return P.eqps[p];
+    default:
+      if (field >= 5 && field <= 10) return P.stress[field - 5][p];
+      return P.velocity[field - 11][p];
+  }
+}
+
+ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm::State& s,
+                         const std::filesystem::path& path) {
+  if (probes.empty()) return;
+  out_.open(path);
+  out_ << "time";
+  for (const auto& probe : probes) {
+    const std::size_t p = nearest_point(s, probe.position);
+    for (const auto& f : probe.fields) {
+      columns_.push_back({p, probe_field_index(f)});
+      out_ << fmt::format(",{}.{}", probe.name, f);
+    }
+  }
+  out_ << "\n";
+}
+
+void ProbeWriter::record(const mpm::State& s) {
+  if (columns_.empty()) return;
+  out_ << fmt::format("{:.10g}", s.time);
+  for (const Column& c : columns_)
+    out_ << fmt::format(",{:.10g}", probe_value(s, c.point, c.field));
+  out_ << "\n";
+  out_.flush();
+}
+
+}  // namespace coldspray::run

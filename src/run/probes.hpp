@@ -1,0 +1,36 @@
+// Probes: Lagrangian gauges, like the embedded gauges of plate-impact experiments. Each follows
+// the material point nearest to its position at t = 0 and records the requested fields.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "case/case.hpp"
+#include "mpm/state.hpp"
+
+namespace coldspray::run {
+
+class ProbeWriter {
+ public:
+  // Opens path and writes the header time,NAME.FIELD,...; does nothing if there are no probes.
+  ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm::State& s,
+              const std::filesystem::path& path);
+  void record(const mpm::State& s);
+
+ private:
+  struct Column {
+    std::size_t point;
+    int field;
+  };
+  std::vector<Column> columns_;
+  std::ofstream out_;
+};
+
+// The value of a probe field at a point; the field names are those of docs/input-reference.md.
+// Returns -1 for an unknown name (the case parser has already rejected those).
+int probe_field_index(const std::string& name);
+double probe_value(const mpm::State& s, std::size_t p, int field);
+
+}  // namespace coldspray::run

@@ -1,0 +1,14 @@
+// A snapshot of the material points for ParaView: body id, velocity, eqps, temperature,
+// pressure, von Mises stress, density and the surface flag. In r-z runs the points lie in the
+// x-z plane with x = r.
+#pragma once
+
+#include <filesystem>
+
+#include "mpm/state.hpp"
+
+namespace coldspray::run {
+
+void write_snapshot(const mpm::State& s, const std::filesystem::path& path);
+
+}  // namespace coldspray::run

@@ -1,0 +1,34 @@
+// What a run reports: status, counts, timing, the energy budget and per-body measures;
+// written as summary.json and returned to in-process callers (studies).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "metrics/body_metrics.hpp"
+#include "metrics/energy.hpp"
+
+namespace coldspray::run {
+
+struct Summary {
+  std::string status = "ok";  // "ok", or "fault: <message>"
+  long steps = 0;
+  double time = 0.0;  // simulated, s
+  double wall_seconds = 0.0;
+  int threads = 1;
+  std::size_t particles = 0;
+  double particle_steps_per_second = 0.0;
+  double last_dt = 0.0;
+  metrics::EnergyBudget energy;
+  double total_energy_initial = 0.0;
+  std::vector<metrics::BodyMetrics> bodies;
+
+  double energy_relative_error() const {
+    return (energy.total() - total_energy_initial) / total_energy_initial;
+  }
+};
+
+void write_summary_json(const Summary& s, const std::filesystem::path& path);
+
+}  // namespace coldspray::run
