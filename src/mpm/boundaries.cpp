@@ -35,11 +35,19 @@ void apply_absorbing_dashpots(State& s) {
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < count; ++i) {
     AbsorbingPoint& a = s.absorbing[i];
-    for (int d = 0; d < 3; ++d) {
-      const double v = P.velocity[d][a.point];
-      s.external_force[d][a.point] = -a.damping[d] * v;
-      a.absorbed += a.damping[d] * v * v * s.dt;
-    }
+    for (int d = 0; d < 3; ++d)
+      s.external_force[d][a.point] = -a.damping[d] * P.velocity[d][a.point];
+  }
+}
+
+void account_absorbed_work(State& s) {
+  const Points& P = s.points;
+  const long count = static_cast<long>(s.absorbing.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < count; ++i) {
+    AbsorbingPoint& a = s.absorbing[i];
+    for (int d = 0; d < 3; ++d)
+      a.absorbed -= s.external_force[d][a.point] * P.displacement[d][a.point];
   }
 }
 

@@ -58,8 +58,13 @@ struct ContactRule {
   double friction = 0.0;
 };
 
-// What the contact step did, for the history.
+// What the contact step did, for the history; and its per-step scratch.
 struct ContactResult {
+  // Per ordered body pair [a * bodies + b]: sum over the nodes they share of |grad m_a| / rho_a,
+  // the weight that decides the pair's MVG master body.
+  std::vector<double> gradient_weight;
+  // Per ordered pair: 1 while a is the pair's MVG master, kept from step to step.
+  std::vector<std::uint8_t> master;
   // Impulse received by body a from body b this step, flattened [a * bodies + b], N s.
   std::vector<std::array<double, 3>> impulse;
 };

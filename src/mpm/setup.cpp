@@ -310,6 +310,8 @@ State build_state(const case_file::Case& c) {
       s.contact_rule.normal_body = static_cast<int>(b);
   }
   s.contact_result.impulse.assign(c.bodies.size() * c.bodies.size(), {0.0, 0.0, 0.0});
+  s.contact_result.gradient_weight.assign(c.bodies.size() * c.bodies.size(), 0.0);
+  s.contact_result.master.assign(c.bodies.size() * c.bodies.size(), 0);
 
   double min_mass = std::numeric_limits<double>::max();
   for (std::size_t q = 0; q < total; ++q) {

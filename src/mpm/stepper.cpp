@@ -190,6 +190,7 @@ void musl_step(State& s) {
   for (const BodyRange& body : s.bodies)            //   and Appendix A
     max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
   s.max_signal_speed = max_speed;
+  account_absorbed_work(s);
   s.time += s.dt;  // step 12: the grid is reset
   ++s.step;        //   by the next step's clear
 }
