@@ -13,6 +13,7 @@
 
 #include "run_command.hpp"
 #include "table.hpp"
+#include "temp_dir.hpp"
 
 namespace coldspray::testing {
 namespace {

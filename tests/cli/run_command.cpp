@@ -5,16 +5,11 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 
-namespace coldspray::testing {
+#include "temp_dir.hpp"
 
-std::string make_temp_dir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "coldspray-cli-XXXXXX").string();
-  if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-  return pattern;
-}
+namespace coldspray::testing {
 
 CommandResult run_coldspray(const std::string& args, const std::string& workdir) {
   const std::string dir = workdir.empty() ? make_temp_dir() : workdir;

@@ -13,7 +13,4 @@ struct CommandResult {
 // Runs `coldspray ARGS` through the shell in `workdir` (default: a fresh temporary folder).
 CommandResult run_coldspray(const std::string& args, const std::string& workdir = "");
 
-// A new empty folder under the system temporary directory.
-std::string make_temp_dir();
-
 }  // namespace coldspray::testing

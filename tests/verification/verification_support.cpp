@@ -1,11 +1,10 @@
 #include "verification_support.hpp"
 
-#include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 
 #include "case/load.hpp"
 #include "run/run.hpp"
+#include "temp_dir.hpp"
 
 namespace coldspray::verification {
 
@@ -15,9 +14,7 @@ CaseRun run_verification_case(const std::string& name,
   for (const auto& [k, v] : sets) overrides.push_back({k, v});
   const case_file::Case c = case_file::load_case(
       std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/" + name + ".yaml", overrides);
-  std::string dir =
-      (std::filesystem::temp_directory_path() / ("coldspray-verify-" + name + "-XXXXXX")).string();
-  if (::mkdtemp(dir.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  const std::string dir = testing::make_temp_dir("verify-" + name);
   run::RunOptions options;
   options.out_dir = dir;
   options.progress = false;
