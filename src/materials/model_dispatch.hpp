@@ -27,6 +27,7 @@
 #include "materials/strength/conditions.hpp"
 #include "materials/strength/elastic.hpp"
 #include "materials/strength/johnson_cook.hpp"
+#include "materials/strength/prepare.hpp"
 #include "materials/strength/ptw.hpp"
 #include "materials/strength/von_mises.hpp"
 
@@ -50,6 +51,10 @@ struct ModelSet {
   }
   double flow_stress_at(double eqps, double rate, const strength::Conditions& c) const {
     return strength::flow_stress(strength_model, eqps, rate, c);
+  }
+  // The flow stress as a function of (eqps, rate) under fixed conditions (strength/prepare.hpp).
+  auto flow_stress_in_step(const strength::Conditions& c) const {
+    return strength::prepare(strength_model, c);
   }
   // p = A(J) + B E (thesis eq 3.42), E per reference volume.
   double reference_pressure(double J) const {

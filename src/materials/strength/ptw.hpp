@@ -26,29 +26,49 @@ inline double ptw_atomic_rate(const Ptw& p, double density, double shear_modulus
          std::sqrt(shear_modulus / density);
 }
 
+// PTW within one step: the terms of eqs 2.7-2.8 that depend only on the step's conditions
+// (T/Tm and ln(gamma xi_dot), whose cube root dominates an evaluation) are taken once, so the
+// consistent return's iterations evaluate only what depends on the strain and the rate.
+class PtwStep {
+ public:
+  PtwStep(const Ptw& p, const Conditions& c)
+      : p_(p),
+        mu_(c.shear_modulus),
+        T_hat_(c.temperature / c.melt_temperature),
+        ln_gamma_xi_(std::log(p.gamma * ptw_atomic_rate(p, c.density, c.shear_modulus))) {}
+
+  double operator()(double eqps, double rate) const {
+    if (T_hat_ >= 1.0) return 0.0;  // melted: no strength
+    // ln of the dimensionless rate r = rate/(gamma xi_dot); the powers of r below as exp(k ln r).
+    const double ln_r = std::log(std::max(rate, kPtwMinStrainRate)) - ln_gamma_xi_;
+    const double thermal = std::erf(-p_.kappa * T_hat_ * ln_r);
+    const double overdriven = p_.s0 * std::exp(p_.s1 * ln_r);
+    // Eq 2.7a/b: thermal activation against the overdriven-shock power laws.
+    const double tau_s = std::max(p_.s0 - (p_.s0 - p_.s_inf) * thermal, overdriven);
+    const double tau_y = std::max(p_.y0 - (p_.y0 - p_.y_inf) * thermal,
+                                  std::min(p_.y1 * std::exp(p_.y2 * ln_r), overdriven));
+    // tau_s <= tau_y: saturated, eq 2.4's limit beta -> 0 for eqps > 0 (and below it, eq 2.4
+    // would soften with strain).
+    if (tau_s <= tau_y) return 2.0 * tau_s * mu_;
+    // Eqs 2.4-2.5 rewritten exactly as tau = tau_y + alpha ln(1 + psi (1 - exp(-w/psi))),
+    // w = theta eqps / alpha, so expm1/log1p keep it accurate near eqps = 0 and near saturation.
+    const double alpha = (p_.s0 - tau_y) / p_.p;
+    const double psi = std::expm1((tau_s - tau_y) / alpha);
+    const double w = p_.theta * eqps / alpha;
+    // beta > ~709 overflows psi; its limit psi (1 - exp(-w/psi)) -> w.
+    const double hardening = std::isinf(psi) ? w : -psi * std::expm1(-w / psi);
+    return 2.0 * (tau_y + alpha * std::log1p(hardening)) * mu_;
+  }
+
+ private:
+  const Ptw& p_;
+  double mu_, T_hat_, ln_gamma_xi_;
+};
+
+inline PtwStep prepare(const Ptw& p, const Conditions& c) { return PtwStep(p, c); }
+
 inline double flow_stress(const Ptw& p, double eqps, double rate, const Conditions& c) {
-  const double T_hat = c.temperature / c.melt_temperature;
-  if (T_hat >= 1.0) return 0.0;  // melted: no strength
-  // ln of the dimensionless rate r = rate/(gamma xi_dot); the powers of r below as exp(k ln r).
-  const double ln_r = std::log(std::max(rate, kPtwMinStrainRate) /
-                               (p.gamma * ptw_atomic_rate(p, c.density, c.shear_modulus)));
-  const double thermal = std::erf(-p.kappa * T_hat * ln_r);
-  const double overdriven = p.s0 * std::exp(p.s1 * ln_r);
-  // Eq 2.7a/b: thermal activation against the overdriven-shock power laws.
-  const double tau_s = std::max(p.s0 - (p.s0 - p.s_inf) * thermal, overdriven);
-  const double tau_y = std::max(p.y0 - (p.y0 - p.y_inf) * thermal,
-                                std::min(p.y1 * std::exp(p.y2 * ln_r), overdriven));
-  // tau_s <= tau_y: saturated, eq 2.4's limit beta -> 0 for eqps > 0 (and below it, eq 2.4 would
-  // soften with strain).
-  if (tau_s <= tau_y) return 2.0 * tau_s * c.shear_modulus;
-  // Eqs 2.4-2.5 rewritten exactly as tau = tau_y + alpha ln(1 + psi (1 - exp(-w/psi))),
-  // w = theta eqps / alpha, so expm1/log1p keep it accurate near eqps = 0 and near saturation.
-  const double alpha = (p.s0 - tau_y) / p.p;
-  const double psi = std::expm1((tau_s - tau_y) / alpha);
-  const double w = p.theta * eqps / alpha;
-  // beta > ~709 overflows psi; its limit psi (1 - exp(-w/psi)) -> w.
-  const double hardening = std::isinf(psi) ? w : -psi * std::expm1(-w / psi);
-  return 2.0 * (tau_y + alpha * std::log1p(hardening)) * c.shear_modulus;
+  return PtwStep(p, c)(eqps, rate);
 }
 
 }  // namespace coldspray::materials::strength
