@@ -15,6 +15,7 @@
 #include "io/vtu.hpp"
 #include "mpm/setup.hpp"
 #include "mpm/stepper.hpp"
+#include "run/contact_history.hpp"
 #include "run/history.hpp"
 #include "run/probes.hpp"
 #include "run/snapshot.hpp"
@@ -73,6 +74,7 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
   io::write_atomically(out / "case.resolved.yaml",
                        [&](std::ostream& os) { case_file::write_resolved(c, os); });
   HistoryWriter history(s, out / "history.csv");
+  ContactHistoryWriter contact_history(out / "contact.csv");
   ProbeWriter probes(c.output.probes, s, out / "probes.csv");
   io::PvdCollection pvd(out / "snapshots.pvd");
   auto snapshot = [&] {
@@ -100,6 +102,7 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
     if (!history_due.due(s.time) && !force) return;
     const metrics::EnergyBudget e = metrics::energy_budget(s);
     history.record(s.time, e, metrics::body_metrics(s));
+    contact_history.record(s);
     probes.record(s);
     if (e.total() > (1.0 + kEnergyGrowthLimit) * summary.total_energy_initial)
       throw RunFault(

@@ -1,9 +1,13 @@
 // Two elastic spheres colliding head-on: momentum conserved to 1e-10 relative and at least 95 %
-// of the kinetic energy carried away as rigid-body motion once they separate.
+// of the kinetic energy carried away as rigid-body motion once they separate; contact.csv holds
+// the pair's force, equal to each body's total contact force in history.csv.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 #include "verification_support.hpp"
 
@@ -24,6 +28,38 @@ TEST(Verification, ElasticSpheresConserveMomentum) {
   EXPECT_LT(std::abs(total) / reference, 1e-10);
   EXPECT_GT(rebound * rebound / 2500.0, 0.95);
   EXPECT_LT(std::abs(run.summary.energy_relative_error()), 0.01);
+
+  // With two bodies, the force on `upper` from `lower` is upper's whole contact force, and
+  // lower feels the opposite.
+  std::map<double, double> pair_fz;  // time -> fz on upper from lower
+  std::ifstream csv(run.out_dir + "/contact.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "time,body,other,fx,fy,fz");
+  while (std::getline(csv, line)) {
+    std::stringstream row(line);
+    std::string time, body, other, fx, fy, fz;
+    std::getline(row, time, ',');
+    std::getline(row, body, ',');
+    std::getline(row, other, ',');
+    std::getline(row, fx, ',');
+    std::getline(row, fy, ',');
+    std::getline(row, fz, ',');
+    EXPECT_EQ(body + "/" + other, "upper/lower");
+    pair_fz[std::stod(time)] = std::stod(fz);
+  }
+  const Table h = run.history();
+  const auto t = h.values("time"), upper_fz = h.values("upper.contact_fz"),
+             lower_fz = h.values("lower.contact_fz");
+  std::size_t touching = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const auto it = pair_fz.find(t[i]);
+    const double fz = it == pair_fz.end() ? 0.0 : it->second;
+    touching += fz != 0.0;
+    EXPECT_NEAR(upper_fz[i], fz, 1e-9 * std::abs(fz) + 1e-12);
+    EXPECT_NEAR(lower_fz[i], -fz, 1e-9 * std::abs(fz) + 1e-12);
+  }
+  EXPECT_GT(touching, 5u);
 }
 
 }  // namespace

@@ -1,0 +1,23 @@
+// contact.csv: the contact force between each pair of bodies over time, one row per touching
+// pair, so that its size follows the contacts, not bodies squared.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+
+#include "mpm/state.hpp"
+
+namespace coldspray::run {
+
+class ContactHistoryWriter {
+ public:
+  explicit ContactHistoryWriter(const std::filesystem::path& path);
+  // Rows `time,body,other,fx,fy,fz`: the force on `body` from `other` over the last step (N),
+  // for every pair (body before other in `bodies`) that exchanged momentum in it.
+  void record(const mpm::State& s);
+
+ private:
+  std::ofstream out_;
+};
+
+}  // namespace coldspray::run
