@@ -96,6 +96,8 @@ struct Contact {
   ContactNormal normal = ContactNormal::MaxGradient;
   std::string normal_body;  // with ContactNormal::Body
   double friction = 0.0;    // Coulomb coefficient; 0 = frictionless
+  // Also require the bodies' surfaces, from their points' extents, to meet at the node.
+  bool gap_check = true;
 
   friend bool operator==(const Contact&, const Contact&) = default;
 };

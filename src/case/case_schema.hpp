@@ -122,6 +122,7 @@ template <class IO>
 void fields(IO& io, Contact& c) {
   io.scalar("normal", c, ContactNormalText{}, kOptional);
   io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
+  io.scalar("gap_check", c.gap_check, Flag{}, kOptional);
 }
 
 template <class IO>

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -51,6 +52,10 @@ void ContactNodes::grow(std::size_t slots) {
   mass.resize(slots * kMaxBodiesPerNode);
   for (auto* a : {&momentum, &force, &mass_gradient, &correction})
     for (auto& v : *a) v.resize(slots * kMaxBodiesPerNode);
+  pair_master.resize(slots * kMaxPairsPerNode);
+  for (auto& v : pair_normal) v.resize(slots * kMaxPairsPerNode);
+  master_surface.resize(slots * kMaxPairsPerNode);
+  other_surface.resize(slots * kMaxPairsPerNode);
 }
 
 namespace {
@@ -119,31 +124,57 @@ bool first_is_master(const ContactRule& rule, const std::vector<double>& weight,
 
 }  // namespace
 
-void resolve_contact(ContactNodes& c, const ContactRule& rule,
-                     const std::vector<std::uint8_t>& held, double dt, int bodies,
-                     ContactResult& result) {
+void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
+                            const std::vector<std::uint8_t>& held, int bodies,
+                            ContactResult& result) {
   weigh_gradients(c, rule, bodies, result.gradient_weight);
   for (std::size_t s = 0; s < c.size(); ++s) {
     const auto slot = static_cast<std::int32_t>(s);
     for (int e1 = 0; e1 < c.body_count(slot); ++e1)
       for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2) {
-        std::size_t fm = ContactNodes::flat(slot, e1), fs = ContactNodes::flat(slot, e2);
-        int bm = c.body(slot, e1), bs = c.body(slot, e2);
-        if (!first_is_master(rule, result.gradient_weight, bodies, bm, bs, result.master)) {
-          std::swap(fm, fs);
-          std::swap(bm, bs);
-        }
-        const double mm = c.mass[fm], ms = c.mass[fs];
-        Vector3d grad = load(c.mass_gradient, fm);
+        const std::size_t k = ContactNodes::pair(slot, e1, e2);
+        const int master = first_is_master(rule, result.gradient_weight, bodies, c.body(slot, e1),
+                                           c.body(slot, e2), result.master)
+                               ? e1
+                               : e2;
+        const int other = master == e1 ? e2 : e1;
+        Vector3d grad = load(c.mass_gradient, ContactNodes::flat(slot, master));
         for (int d = 0; d < 3; ++d)
           if (held[c.node(slot)] & (1u << d)) grad[d] = 0.0;
-        if (mm <= 0.0 || ms <= 0.0 || grad.squaredNorm() == 0.0) continue;
+        const bool usable = c.mass[ContactNodes::flat(slot, master)] > 0.0 &&
+                            c.mass[ContactNodes::flat(slot, other)] > 0.0 &&
+                            grad.squaredNorm() > 0.0;
+        c.pair_master[k] = static_cast<std::int8_t>(usable ? master : -1);
         // Eq 3.30: sum_p m_p grad N_I(x_p) points from the body's points towards the node, so
         // at a surface node it is the master body's outward unit normal.
-        const Vector3d n = grad.normalized();
+        const Vector3d n = usable ? grad.normalized() : Vector3d::Zero();
+        for (int d = 0; d < 3; ++d) c.pair_normal[d][k] = n[d];
+        c.master_surface[k] = -std::numeric_limits<double>::infinity();
+        c.other_surface[k] = std::numeric_limits<double>::infinity();
+      }
+  }
+}
+
+void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
+                     ContactResult& result) {
+  for (std::size_t s = 0; s < c.size(); ++s) {
+    const auto slot = static_cast<std::int32_t>(s);
+    for (int e1 = 0; e1 < c.body_count(slot); ++e1)
+      for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2) {
+        const std::size_t k = ContactNodes::pair(slot, e1, e2);
+        if (c.pair_master[k] < 0) continue;
+        const int em = c.pair_master[k], es = em == e1 ? e2 : e1;
+        const std::size_t fm = ContactNodes::flat(slot, em), fs = ContactNodes::flat(slot, es);
+        const int bm = c.body(slot, em), bs = c.body(slot, es);
+        const double mm = c.mass[fm], ms = c.mass[fs];
+        const Vector3d n = load(c.pair_normal, k);
         const Vector3d pm = load(c.momentum, fm), ps = load(c.momentum, fs);
         // Eq 3.29: the bodies approach when (m_s p_m - m_m p_s) . n > 0.
         if ((ms * pm - mm * ps).dot(n) <= 0.0) continue;
+        // The gap check: the surfaces meet by the end of the step, moving at the nodal velocities.
+        if (rule.gap_check &&
+            c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) > 0.0)
+          continue;
         // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
         const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
         const double normal = stick.dot(n);

@@ -13,6 +13,7 @@
 namespace coldspray::mpm {
 
 inline constexpr int kMaxBodiesPerNode = 4;
+inline constexpr int kMaxPairsPerNode = kMaxBodiesPerNode * (kMaxBodiesPerNode - 1) / 2;
 
 class ContactNodes {
  public:
@@ -33,6 +34,11 @@ class ContactNodes {
   static std::size_t flat(std::int32_t s, int e) {
     return static_cast<std::size_t>(s) * kMaxBodiesPerNode + e;
   }
+  // The pair of entries e1 < e2 at slot s, indexing the per-pair arrays.
+  static std::size_t pair(std::int32_t s, int e1, int e2) {
+    return static_cast<std::size_t>(s) * kMaxPairsPerNode +
+           static_cast<std::size_t>(e1 * (2 * kMaxBodiesPerNode - e1 - 1) / 2 + e2 - e1 - 1);
+  }
 
   // Body-wise nodal quantities, indexed by flat(slot, entry).
   std::vector<double> mass;
@@ -41,6 +47,15 @@ class ContactNodes {
   std::array<std::vector<double>, 3> mass_gradient;
   // The momentum the contact step added (eq 3.31 times dt), for the contact work on the points.
   std::array<std::vector<double>, 3> correction;
+
+  // Per pair of entries, indexed by pair(slot, e1, e2): the entry whose normal the pair uses
+  // (-1: no normal, the pair is skipped), that unit normal, and the surfaces along it: the
+  // furthest reach of the master's points, max (x_p . n + l_p(n)), and the nearest reach of the
+  // other body's, min (x_p . n - l_p(n)), l_p(n) the point's half-width along n.
+  std::vector<std::int8_t> pair_master;
+  std::array<std::vector<double>, 3> pair_normal;
+  std::vector<double> master_surface;
+  std::vector<double> other_surface;
 
  private:
   void grow(std::size_t slots);
@@ -56,6 +71,9 @@ struct ContactRule {
   int normal_body = -1;                   // with ContactNormal::Body
   std::vector<double> reference_density;  // per body: MVG compares volume gradients
   double friction = 0.0;
+  // Touch only where the surfaces meet (ContactNodes::master_surface, other_surface); without,
+  // the thesis' approach test alone.
+  bool gap_check = true;
 };
 
 // What the contact step did, for the history; and its per-step scratch.
@@ -69,14 +87,21 @@ struct ContactResult {
   std::vector<std::array<double, 3>> impulse;
 };
 
-// For every pair of bodies at every contact node, in a fixed order: the approach test (eq 3.29)
-// and, where they approach, the sticking correction (eq 3.31) reduced to its normal part, with
-// a Coulomb-limited tangential part when friction > 0. Each correction changes the two bodies'
-// momenta by equal and opposite amounts, and their forces by the same over dt.
-// `held` is the grid's NodeConstraint bits: a held velocity component (a symmetry or roller
-// plane through the node) is removed from the normal, which cannot point through that plane.
-void resolve_contact(ContactNodes& contact, const ContactRule& rule,
-                     const std::vector<std::uint8_t>& held, double dt, int bodies,
+// For every pair of bodies at every contact node: which body's normal the pair uses (thesis
+// §3.5.4, `rule.normal`) and the unit normal from its mass gradient (eq 3.30). `held` is the
+// grid's NodeConstraint bits: a held velocity component (a symmetry or roller plane through the
+// node) is removed from the normal, which cannot point through that plane. Resets the surfaces
+// for the gap measurement (mpm/phases.hpp, measure_contact_surfaces).
+void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
+                            const std::vector<std::uint8_t>& held, int bodies,
+                            ContactResult& result);
+
+// For every pair with a normal, in a fixed order: the approach test (eq 3.29), with the gap check
+// the surfaces meeting by the end of the step, and then the sticking correction (eq 3.31)
+// reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Each
+// correction changes the two bodies' momenta by equal and opposite amounts, and their forces by
+// the same over dt.
+void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
                      ContactResult& result);
 
 }  // namespace coldspray::mpm

@@ -124,6 +124,41 @@ void map_bodies_to_contact_nodes(State& s) {
   });
 }
 
+// For the gap check: along each contact pair's normal, the furthest reach of the master body's
+// points (x_p . n plus the point's half-width along n) and the nearest reach of the other's, over
+// the points whose support covers the node. Minima and maxima are exact in any order, and the
+// slab colouring keeps threads off each other's nodes.
+template <class Shape, bool Axisymmetric>
+void measure_contact_surfaces(State& s) {
+  if (s.contact.size() == 0 || !s.contact_rule.gap_check) return;
+  ContactNodes& cn = s.contact;
+  const Points& P = s.points;
+  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+    if (!s.near_contact[cell_of(s, p)]) return;
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const int b = P.body[p];
+    st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
+      const std::int32_t slot = s.grid.contact_slot[node];
+      if (slot < 0 || w == 0.0) return;
+      const int e = cn.find(slot, b);
+      for (int o = 0; o < cn.body_count(slot); ++o) {
+        if (o == e) continue;
+        const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
+        if (cn.pair_master[k] < 0) continue;
+        double along = 0.0, reach = 0.0;
+        for (int d = 0; d < 3; ++d) {
+          along += P.position[d][p] * cn.pair_normal[d][k];
+          reach += P.half_width[d][p] * std::abs(cn.pair_normal[d][k]);
+        }
+        if (cn.pair_master[k] == e)
+          cn.master_surface[k] = std::max(cn.master_surface[k], along + reach);
+        else
+          cn.other_surface[k] = std::min(cn.other_surface[k], along - reach);
+      }
+    });
+  });
+}
+
 // The nodal mass, momentum and force a point of body b sees at node n: its own body's at a
 // contact node, the total elsewhere. Returns false where the node carries no velocity.
 struct NodeView {

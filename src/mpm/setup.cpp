@@ -303,6 +303,7 @@ State build_state(const case_file::Case& c) {
 
   s.contact_rule.normal = c.contact.normal;
   s.contact_rule.friction = c.contact.friction;
+  s.contact_rule.gap_check = c.contact.gap_check;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
     if (c.contact.normal == case_file::ContactNormal::Body &&

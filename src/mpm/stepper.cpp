@@ -173,15 +173,19 @@ namespace {
 
 template <class Shape, bool Axisymmetric>
 void musl_step(State& s) {
+  const int bodies = static_cast<int>(s.bodies.size());
   bin_points_into_slabs(s);
   s.grid.clear();
-  apply_absorbing_dashpots(s);                              // external force, eq 3.46
-  map_points_to_grid<Shape, Axisymmetric>(s);               // steps 1-2, eqs 3.23-3.27
-  find_contact_nodes(s);                                    // multi-mesh at contact nodes
-  map_bodies_to_contact_nodes<Shape, Axisymmetric>(s);      //   body-wise m, p, f, grad m
-  integrate_grid_momentum(s);                               // step 3, eq 3.28
-  resolve_contact(s.contact, s.contact_rule, s.constraint,  // steps 4-6, eqs 3.29-3.31
-                  s.dt, static_cast<int>(s.bodies.size()), s.contact_result);
+  apply_absorbing_dashpots(s);                          // external force, eq 3.46
+  map_points_to_grid<Shape, Axisymmetric>(s);           // steps 1-2, eqs 3.23-3.27
+  find_contact_nodes(s);                                // multi-mesh at contact nodes
+  map_bodies_to_contact_nodes<Shape, Axisymmetric>(s);  //   body-wise m, p, f, grad m
+  integrate_grid_momentum(s);                           // step 3, eq 3.28
+  choose_contact_normals(s.contact, s.contact_rule,     // step 4, eq 3.30
+                         s.constraint, bodies, s.contact_result);
+  measure_contact_surfaces<Shape, Axisymmetric>(s);         //   and the gap between surfaces
+  resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
+                  s.contact_result);
   apply_node_constraints(s, /*force_too=*/true);    //   held nodes stay held
   update_point_velocities<Shape, Axisymmetric>(s);  // step 7, eq 3.32
   remap_momentum<Shape, Axisymmetric>(s);           // step 8, eq 3.33 (MUSL)
