@@ -1,0 +1,308 @@
+#!/usr/bin/python3
+"""Tests of tools/coldspray_plot.py on a small synthetic run folder.
+
+The folder is written here the way `coldspray run` writes its output (src/io/vtu.cpp for the
+appended raw VTU files, snapshots.pvd, history.csv, case.resolved.yaml). The tool's path comes
+from COLDSPRAY_PLOT (set by ctest), else tools/coldspray_plot.py next to this tests/ folder.
+"""
+
+import importlib.util
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+PLOT = os.environ.get("COLDSPRAY_PLOT") or os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "coldspray_plot.py")
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+SPACING = 1.0e-6  # m, both bodies
+
+
+def load_tool():
+    spec = importlib.util.spec_from_file_location("coldspray_plot", PLOT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+# ------------------------------------------------------------------------------------------
+# Writing a synthetic run folder
+# ------------------------------------------------------------------------------------------
+
+def write_vtu(path, points, arrays):
+    """An appended raw VTU like src/io/vtu.cpp: arrays is [(name, vtk type, values)]."""
+    n = len(points)
+    cells = [("connectivity", "Int64", np.arange(n, dtype="<i8")),
+             ("offsets", "Int64", np.arange(1, n + 1, dtype="<i8")),
+             ("types", "UInt8", np.ones(n, dtype="<u1"))]
+    offset, blocks = 0, []
+
+    def declare(name, vtk_type, values):
+        nonlocal offset
+        components = 1 if values.ndim == 1 else values.shape[1]
+        named = f' Name="{name}"' if name else ""
+        line = (f'        <DataArray type="{vtk_type}"{named} NumberOfComponents="{components}" '
+                f'format="appended" offset="{offset}"/>\n')
+        data = np.ascontiguousarray(values).tobytes()
+        blocks.append(struct.pack("<Q", len(data)) + data)
+        offset += 8 + len(data)
+        return line
+
+    xml = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" '
+           'byte_order="LittleEndian" header_type="UInt64">\n  <UnstructuredGrid>\n'
+           f'    <Piece NumberOfPoints="{n}" NumberOfCells="{n}">\n      <PointData>\n')
+    xml += "".join(declare(*a) for a in arrays)
+    xml += "      </PointData>\n      <Points>\n"
+    xml += declare(None, "Float64", np.asarray(points, dtype="<f8"))
+    xml += "      </Points>\n      <Cells>\n"
+    xml += "".join(declare(*c) for c in cells)
+    xml += ('      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n'
+            '  <AppendedData encoding="raw">\n   _')
+    with open(path, "wb") as f:
+        f.write(xml.encode() + b"".join(blocks) + b"\n  </AppendedData>\n</VTKFile>\n")
+
+
+def lattice(geometry):
+    """Points of a 'particle' (a 4 x 4 square above z = 0) and a 'substrate' (8 x 3 below);
+    in 3D three layers at y = -1, 0, 1 um; in r-z the x coordinate is the radius r > 0."""
+    h = SPACING
+    layers = [0.0] if geometry == "axisymmetric" else [-h, 0.0, h]
+    axisymmetric = geometry == "axisymmetric"
+    x0 = 0.5 * h if axisymmetric else -3.5 * h
+    x0_substrate = x0 if axisymmetric else x0 - 2 * h
+    points, body = [], []
+    for y in layers:
+        for i in range(4):
+            for k in range(4):
+                points.append((x0 + i * h, y, (k + 0.5) * h))
+                body.append(0)
+        for i in range(8):
+            for k in range(3):
+                points.append((x0_substrate + i * h, y, -(k + 0.5) * h))
+                body.append(1)
+    return np.array(points), np.array(body, dtype="<i4")
+
+
+def snapshot_arrays(points, body, time):
+    n = len(points)
+    velocity = np.zeros((n, 3))
+    velocity[:, 2] = np.where(body == 0, -100.0 + 1e9 * time, 0.0)
+    eqps = np.where(body == 0, 1e8 * time * points[:, 2] / SPACING, 0.0)
+    return [("body", "Int32", body),
+            ("velocity", "Float64", velocity),
+            ("eqps", "Float64", eqps),
+            ("temperature", "Float64", 298.0 + 10.0 * eqps),
+            ("surface", "UInt8", (np.arange(n) % 2).astype("<u1"))]
+
+
+CASE_YAML = """\
+# The resolved case 'tiny' (synthetic, for the plotting tool's tests): every value in SI units.
+name: tiny
+description: "two blocks # not a comment"
+materials:
+  al:
+    density: 2700  # kg/m^3
+bodies:
+  - name: particle
+    material: al
+    shape:
+      type: box
+      min: [0, 0, 0]  # m
+      max: [4e-06, 1e-06, 4e-06]  # m
+    spacing: {spacing}  # m
+    velocity: [0, 0, -100]  # m/s
+    absorbing: []
+  - name: substrate
+    material: al
+    shape: {{type: box, min: [-2e-06, 0, -3e-06], max: [6e-06, 1e-06, 0]}}
+    spacing: {spacing}  # m
+    absorbing: [bottom, side]
+grid:
+  cell_size: 2e-06  # m
+solver:
+  method: mpm
+  geometry: {geometry}
+  end_time: 2e-08  # s
+output:
+  history_interval: 1e-09  # s
+  probes: []
+"""
+
+HISTORY_COLUMNS = ["time", "kinetic", "total", "particle.vz", "particle.cor", "particle.mean_eqps",
+                   "substrate.vz", "substrate.mean_eqps"]
+
+
+def write_history(path, end_time):
+    rows = [",".join(HISTORY_COLUMNS)]
+    for t in np.linspace(0.0, end_time, 21):
+        cor = "nan" if t < 0.5 * end_time else f"{0.1 + t * 1e6:.6g}"
+        rows.append(",".join([f"{t:.10g}", f"{1e-9 * (1 - t / end_time):.10g}", "1e-09",
+                              f"{-100 + 1e9 * t:.10g}", cor, f"{1e8 * t:.6g}", "0",
+                              f"{1e7 * t:.6g}"]))
+    with open(path, "w") as f:
+        f.write("\n".join(rows) + "\n")
+
+
+def moved(points, body, time):
+    """The particle's points moved down by 1 mm/s x time (a tiny, exactly known offset)."""
+    return points + np.where(body == 0, -1e-3 * time, 0.0)[:, None] * [0, 0, 1]
+
+
+def write_run(folder, geometry):
+    """A run folder with snapshots at 0, 10 and 20 ns."""
+    os.makedirs(os.path.join(folder, "snapshots"))
+    with open(os.path.join(folder, "case.resolved.yaml"), "w") as f:
+        f.write(CASE_YAML.format(spacing=f"{SPACING:g}", geometry=geometry))
+    points, body = lattice(geometry)
+    entries = []
+    for step, time in ((0, 0.0), (5, 1e-8), (10, 2e-8)):
+        name = f"snapshots/step_{step:08d}.vtu"
+        now = moved(points, body, time)
+        write_vtu(os.path.join(folder, name), now, snapshot_arrays(now, body, time))
+        entries.append(f'    <DataSet timestep="{time:.10g}" file="{name}"/>')
+    with open(os.path.join(folder, "snapshots.pvd"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
+                "  <Collection>\n" + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
+    write_history(os.path.join(folder, "history.csv"), 2e-8)
+    return points, body
+
+
+# ------------------------------------------------------------------------------------------
+# Tests
+# ------------------------------------------------------------------------------------------
+
+class PlotToolTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tool = load_tool()
+        cls.temp = tempfile.TemporaryDirectory(prefix="coldspray-plot-test-")
+        cls.rz = os.path.join(cls.temp.name, "rz")
+        cls.rz_points, cls.rz_body = write_run(cls.rz, "axisymmetric")
+        cls.xyz = os.path.join(cls.temp.name, "xyz")
+        write_run(cls.xyz, "3d")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.temp.cleanup()
+
+    def run_tool(self, *args):
+        return subprocess.run([sys.executable, PLOT, *args], capture_output=True, text=True,
+                              timeout=120)
+
+    def out(self, name):
+        return os.path.join(self.temp.name, name)
+
+    def assert_png(self, result, path):
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(path, "rb") as f:
+            data = f.read()
+        self.assertTrue(data.startswith(PNG_SIGNATURE), path)
+        self.assertGreater(len(data), 1000)
+
+    def assert_failed_without_png(self, result, path, *words):
+        self.assertEqual(result.returncode, 2, result.stderr)
+        for word in words:
+            self.assertIn(word, result.stderr)
+        self.assertFalse(os.path.exists(path))
+        self.assertEqual([f for f in os.listdir(os.path.dirname(path)) if "coldspray_plot" in f],
+                         [], "a temporary file was left behind")
+
+    # --- readers ------------------------------------------------------------------------
+
+    def test_vtu_reader_returns_the_written_arrays(self):
+        data = self.tool.read_vtu(os.path.join(self.rz, "snapshots", "step_00000005.vtu"))
+        expected_points = moved(self.rz_points, self.rz_body, 1e-8)
+        expected = dict((name, values) for name, _, values in
+                        snapshot_arrays(expected_points, self.rz_body, 1e-8))
+        self.assertEqual(sorted(data.arrays), sorted(expected))
+        np.testing.assert_array_equal(data.points, expected_points)
+        for name, values in expected.items():
+            np.testing.assert_array_equal(data.arrays[name], values, err_msg=name)
+        self.assertEqual(data.arrays["body"].dtype, np.int32)
+        self.assertEqual(data.arrays["surface"].dtype, np.uint8)
+        self.assertEqual(data.arrays["velocity"].shape, (len(self.rz_points), 3))
+        self.assertEqual(data.arrays["velocity"][0, 2], -90.0)
+
+    def test_pvd_reader_lists_times_and_files(self):
+        entries = self.tool.read_pvd(os.path.join(self.rz, "snapshots.pvd"))
+        self.assertEqual([t for t, _ in entries], [0.0, 1e-8, 2e-8])
+        self.assertTrue(all(os.path.isfile(path) for _, path in entries))
+
+    def test_case_reader_finds_geometry_bodies_and_spacings(self):
+        case = self.tool.CaseInfo(os.path.join(self.rz, "case.resolved.yaml"))
+        self.assertTrue(case.axisymmetric)
+        self.assertEqual(case.body_names, ["particle", "substrate"])
+        self.assertEqual(case.spacings, [SPACING, SPACING])
+        self.assertFalse(self.tool.CaseInfo(os.path.join(self.xyz, "case.resolved.yaml")).axisymmetric)
+
+    def test_times_accept_units(self):
+        for text in ("80ns", "80 ns", "8e-8", "0.08us", "8e-8 s", "80000ps"):
+            self.assertAlmostEqual(self.tool.parse_time(text), 8e-8, delta=1e-20, msg=text)
+        for text in ("80 parsecs", "ns", ""):
+            with self.assertRaises(self.tool.PlotError):
+                self.tool.parse_time(text)
+
+    def test_axisymmetric_section_is_mirrored(self):
+        case = self.tool.CaseInfo(os.path.join(self.rz, "case.resolved.yaml"))
+        data = self.tool.read_vtu(os.path.join(self.rz, "snapshots", "step_00000000.vtu"))
+        section = self.tool.make_section(data, case, [0], ["eqps"], "test")
+        self.assertEqual(len(section.h), 2 * 16)
+        np.testing.assert_array_equal(section.h[16:], -section.h[:16])
+
+    def test_3d_section_takes_the_middle_layer(self):
+        case = self.tool.CaseInfo(os.path.join(self.xyz, "case.resolved.yaml"))
+        data = self.tool.read_vtu(os.path.join(self.xyz, "snapshots", "step_00000000.vtu"))
+        section = self.tool.make_section(data, case, [0, 1], ["velocity.z"], "test")
+        self.assertEqual(len(section.h), 16 + 24)  # one layer of three
+        self.assertEqual(set(section.values["velocity.z"]), {-100.0, 0.0})
+
+    # --- the command line ---------------------------------------------------------------
+
+    def test_section_writes_a_png(self):
+        path = self.out("section.png")
+        result = self.run_tool("section", self.rz, "--times", "0ns,10 ns,0.02us", "--field", "eqps",
+                               "--field", "temperature", "--range", "0:1", "--out", path)
+        self.assert_png(result, path)
+
+    def test_section_of_a_3d_run_writes_a_png(self):
+        path = self.out("section3d.png")
+        result = self.run_tool("section", self.xyz, "--times", "2e-8", "--field", "velocity",
+                               "--bodies", "particle", "--out", path)
+        self.assert_png(result, path)
+
+    def test_history_overlays_runs(self):
+        path = self.out("history.png")
+        result = self.run_tool("history", self.rz, self.xyz, "--columns", "cor,mean_eqps,kinetic",
+                               "--body", "particle", "--labels", "r-z,3D", "--out", path)
+        self.assert_png(result, path)
+
+    def test_missing_column_fails_without_a_png(self):
+        path = self.out("missing-column.png")
+        result = self.run_tool("history", self.rz, "--columns", "mean_eqps,no_such_column",
+                               "--body", "particle", "--out", path)
+        self.assert_failed_without_png(result, path, "no_such_column", "particle.mean_eqps")
+
+    def test_unknown_field_fails_without_a_png(self):
+        path = self.out("unknown-field.png")
+        result = self.run_tool("section", self.rz, "--times", "10ns", "--field", "bond",
+                               "--out", path)
+        self.assert_failed_without_png(result, path, "bond", "eqps")
+
+    def test_time_outside_the_run_fails_without_a_png(self):
+        path = self.out("late.png")
+        result = self.run_tool("section", self.rz, "--times", "10ns,50ns", "--out", path)
+        self.assert_failed_without_png(result, path, "50ns")
+
+    def test_missing_folder_fails_without_a_png(self):
+        path = self.out("nothing.png")
+        missing = os.path.join(self.temp.name, "no-such-run")
+        result = self.run_tool("history", missing, "--columns", "kinetic", "--out", path)
+        self.assert_failed_without_png(result, path, missing)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

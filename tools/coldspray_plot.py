@@ -1,0 +1,733 @@
+#!/usr/bin/python3
+"""Figures from a coldspray run's output folder.
+
+`coldspray run CASE.yaml --out DIR` writes DIR/summary.json, DIR/history.csv,
+DIR/snapshots.pvd, DIR/snapshots/step_XXXXXXXX.vtu and DIR/case.resolved.yaml.
+This tool reads them and writes PNG figures:
+
+  section DIR --times 10ns,40ns,80ns --field eqps --out eqps.png
+      cross-sections of the bodies coloured by a point field, one panel per time;
+  history DIR [DIR2 ...] --columns cor,v_rest --body particle --out history.png
+      history.csv columns against time, several runs overlaid;
+  info DIR
+      what a run folder holds: snapshot times, point fields, history columns.
+
+Only the standard library, numpy and matplotlib (Debian's python3-numpy and
+python3-matplotlib). Errors go to stderr with exit status 2, and no PNG is written.
+See docs/plotting.md.
+"""
+
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
+from matplotlib.collections import PolyCollection  # noqa: E402
+
+EXIT_ERROR = 2
+METRE_TO_UM = 1e6
+SECOND_TO_NS = 1e9
+
+
+class PlotError(Exception):
+    """A user-facing error: the message names the file or argument at fault."""
+
+
+# --------------------------------------------------------------------------------------
+# Numbers with units
+# --------------------------------------------------------------------------------------
+
+TIME_UNITS = {"": 1.0, "s": 1.0, "ms": 1e-3, "us": 1e-6, "\u00b5s": 1e-6, "\u03bcs": 1e-6,
+              "ns": 1e-9, "ps": 1e-12}
+LENGTH_UNITS = {"": 1.0, "m": 1.0, "mm": 1e-3, "um": 1e-6, "\u00b5m": 1e-6, "\u03bcm": 1e-6,
+                "nm": 1e-9}
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S*)\s*$")
+
+
+def parse_quantity(text, units, what):
+    """Parses '80ns', '80 ns', '8e-8' (no unit: SI) into an SI float using `units`."""
+    match = _QUANTITY.match(text)
+    if not match or match.group(2) not in units:
+        known = ", ".join(u for u in units if u)
+        raise PlotError(f"{what}: cannot read '{text}' (a number with an optional unit: {known})")
+    return float(match.group(1)) * units[match.group(2)]
+
+
+def parse_time(text, what="--times"):
+    return parse_quantity(text, TIME_UNITS, what)
+
+
+def split_list(values):
+    """Flattens repeated and comma-separated option values: ['a,b', 'c'] -> ['a', 'b', 'c']."""
+    items = []
+    for value in values or []:
+        items.extend(part.strip() for part in value.split(",") if part.strip())
+    return items
+
+
+def parse_range(text, what):
+    """'0:3' -> (0.0, 3.0); either side may be empty (None: automatic)."""
+    low, sep, high = text.partition(":")
+    if not sep:
+        raise PlotError(f"{what}: '{text}' is not LOW:HIGH")
+    try:
+        bounds = tuple(float(v) if v.strip() else None for v in (low, high))
+    except ValueError:
+        raise PlotError(f"{what}: '{text}' is not LOW:HIGH with numbers") from None
+    if None not in bounds and bounds[0] >= bounds[1]:
+        raise PlotError(f"{what}: '{text}' needs LOW < HIGH")
+    return bounds
+
+
+# --------------------------------------------------------------------------------------
+# case.resolved.yaml: a small reader for the block YAML that coldspray writes
+# --------------------------------------------------------------------------------------
+
+_YAML_KEY = re.compile(r"^([^\s:#'\"][^:#]*?)\s*:(?:\s+(.*))?$")
+
+
+def _strip_comment(line):
+    """Removes a trailing ' # comment' that is not inside a quoted scalar."""
+    quote = None
+    for i, char in enumerate(line):
+        if quote:
+            quote = None if char == quote else quote
+        elif char in "'\"" and (i == 0 or line[i - 1] in " \t[{,"):  # not an apostrophe
+            quote = char
+        elif char == "#" and (i == 0 or line[i - 1].isspace()):
+            return line[:i].rstrip()
+    return line.rstrip()
+
+
+def _yaml_lines(text):
+    """(indent, content) for each line that holds something."""
+    lines = []
+    for raw in text.splitlines():
+        content = _strip_comment(raw)
+        if content.strip():
+            lines.append([len(content) - len(content.lstrip(" ")), content.strip()])
+    return lines
+
+
+def _yaml_scalar(text):
+    if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
+        return text[1:-1]
+    return text  # numbers and flow collections ([0, 0, 1]) stay text
+
+
+def _parse_yaml_node(lines, i, indent):
+    if lines[i][1] == "-" or lines[i][1].startswith("- "):
+        return _parse_yaml_sequence(lines, i, indent)
+    return _parse_yaml_mapping(lines, i, indent)
+
+
+def _parse_yaml_mapping(lines, i, indent):
+    mapping = {}
+    while i < len(lines) and lines[i][0] == indent:
+        match = _YAML_KEY.match(lines[i][1])
+        if not match:
+            break
+        key, value = match.group(1), match.group(2)
+        i += 1
+        nested = i < len(lines) and (lines[i][0] > indent or
+                                     (lines[i][0] == indent and lines[i][1].startswith("-")))
+        if value is None and nested:
+            mapping[key], i = _parse_yaml_node(lines, i, lines[i][0])
+        else:
+            mapping[key] = _yaml_scalar(value or "")
+    return mapping, i
+
+
+def _parse_yaml_sequence(lines, i, indent):
+    items = []
+    while i < len(lines) and lines[i][0] == indent and lines[i][1].startswith("-"):
+        rest = lines[i][1][1:].lstrip()
+        if not rest:
+            i += 1
+            item, i = _parse_yaml_node(lines, i, lines[i][0]) if i < len(lines) else (None, i)
+        elif _YAML_KEY.match(rest):
+            # '- key: value' opens a mapping whose keys line up with 'key'.
+            lines[i] = [indent + len(lines[i][1]) - len(rest), rest]
+            item, i = _parse_yaml_mapping(lines, i, lines[i][0])
+        else:
+            item, i = _yaml_scalar(rest), i + 1
+        items.append(item)
+    return items, i
+
+
+def parse_yaml(text):
+    """Block mappings and sequences with scalar leaves (as text): what case.resolved.yaml uses."""
+    lines = _yaml_lines(text)
+    if not lines:
+        return {}
+    node, _ = _parse_yaml_node(lines, 0, lines[0][0])
+    return node
+
+
+class CaseInfo:
+    """The few keys of case.resolved.yaml the figures need."""
+
+    def __init__(self, path):
+        self.path = path
+        data = parse_yaml(read_text(path))
+        if not isinstance(data, dict):
+            raise PlotError(f"{path}: not a case file")
+        solver = data.get("solver") or {}
+        self.geometry = solver.get("geometry", "3d") if isinstance(solver, dict) else "3d"
+        self.body_names, self.spacings = [], []
+        for n, body in enumerate(data.get("bodies") or []):
+            if not isinstance(body, dict) or "name" not in body or "spacing" not in body:
+                raise PlotError(f"{path}: bodies[{n}] needs a name and a spacing")
+            self.body_names.append(body["name"])
+            self.spacings.append(parse_quantity(body["spacing"], LENGTH_UNITS,
+                                                f"{path}: bodies[{n}].spacing"))
+        if not self.body_names:
+            raise PlotError(f"{path}: no bodies")
+
+    @property
+    def axisymmetric(self):
+        return self.geometry == "axisymmetric"
+
+
+# --------------------------------------------------------------------------------------
+# Files of a run folder
+# --------------------------------------------------------------------------------------
+
+def read_text(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+    except OSError as e:
+        raise PlotError(f"{path}: cannot read ({e.strerror})") from None
+
+
+def require_dir(path):
+    if not os.path.isdir(path):
+        raise PlotError(f"{path}: no such run folder")
+    return path
+
+
+_VTK_TYPES = {"Int8": "i1", "UInt8": "u1", "Int16": "i2", "UInt16": "u2", "Int32": "i4",
+              "UInt32": "u4", "Int64": "i8", "UInt64": "u8", "Float32": "f4", "Float64": "f8"}
+
+
+class VtuData:
+    """A point cloud from a .vtu file: `points` (n x 3) and `arrays` (name -> n or n x k)."""
+
+    def __init__(self, points, arrays):
+        self.points = points
+        self.arrays = arrays
+
+    def __len__(self):
+        return len(self.points)
+
+
+def _vtu_split(raw, path):
+    """Splits a VTU with raw appended data into (XML header root, start of the data)."""
+    tag = re.search(rb"<AppendedData\b[^>]*>", raw)
+    if not tag:
+        raise PlotError(f"{path}: no <AppendedData> (only appended raw VTU files are read)")
+    if b'encoding="raw"' not in tag.group(0):
+        raise PlotError(f"{path}: appended data is not raw (only encoding=\"raw\" is read)")
+    underscore = raw.find(b"_", tag.end())
+    if underscore < 0:
+        raise PlotError(f"{path}: appended data has no '_' marker")
+    try:
+        root = ET.fromstring(raw[:tag.start()] + b"</VTKFile>")
+    except ET.ParseError as e:
+        raise PlotError(f"{path}: bad XML header ({e})") from None
+    return root, underscore + 1
+
+
+def _vtu_array(raw, start, element, count, header, path):
+    """Reads one appended DataArray of `count` tuples; returns a 1D or 2D numpy array."""
+    name = element.get("Name", "Points")
+    vtk_type, components = element.get("type"), int(element.get("NumberOfComponents", "1"))
+    if element.get("format") != "appended" or vtk_type not in _VTK_TYPES:
+        raise PlotError(f"{path}: array '{name}' is not an appended array of a known type")
+    position = start + int(element.get("offset"))
+    if position + header.itemsize > len(raw):
+        raise PlotError(f"{path}: array '{name}' lies beyond the end of the file")
+    nbytes = int(np.frombuffer(raw, header, 1, position)[0])
+    dtype = np.dtype("<" + _VTK_TYPES[vtk_type])
+    if nbytes != count * components * dtype.itemsize or position + header.itemsize + nbytes > len(raw):
+        raise PlotError(f"{path}: array '{name}' has {nbytes} bytes, "
+                        f"expected {count} x {components} {vtk_type}")
+    values = np.frombuffer(raw, dtype, count * components, position + header.itemsize)
+    return values.reshape(count, components) if components > 1 else values
+
+
+def read_vtu(path):
+    """Reads the points and every point-data array of an appended-raw VTU file."""
+    try:
+        with open(path, "rb") as f:
+            raw = f.read()
+    except OSError as e:
+        raise PlotError(f"{path}: cannot read ({e.strerror})") from None
+    root, start = _vtu_split(raw, path)
+    if root.get("byte_order", "LittleEndian") != "LittleEndian" or root.get("compressor"):
+        raise PlotError(f"{path}: only little-endian uncompressed VTU files are read")
+    header = np.dtype("<u8" if root.get("header_type", "UInt32") == "UInt64" else "<u4")
+    points, arrays = [], {}
+    for piece in root.iter("Piece"):
+        count = int(piece.get("NumberOfPoints", "0"))
+        element = piece.find("Points/DataArray")
+        if element is None:
+            raise PlotError(f"{path}: a piece has no <Points>")
+        points.append(_vtu_array(raw, start, element, count, header, path))
+        for element in piece.findall("PointData/DataArray"):
+            values = _vtu_array(raw, start, element, count, header, path)
+            arrays.setdefault(element.get("Name"), []).append(values)
+    if not points:
+        raise PlotError(f"{path}: no <Piece>")
+    return VtuData(np.concatenate(points).reshape(-1, 3),
+                   {name: np.concatenate(parts) for name, parts in arrays.items()})
+
+
+def read_pvd(path):
+    """[(time in s, absolute .vtu path)] from a ParaView collection, sorted by time."""
+    try:
+        root = ET.fromstring(read_text(path))
+    except ET.ParseError as e:
+        raise PlotError(f"{path}: bad XML ({e})") from None
+    folder = os.path.dirname(os.path.abspath(path))
+    entries = [(float(d.get("timestep", "nan")), os.path.join(folder, d.get("file", "")))
+               for d in root.iter("DataSet")]
+    if not entries:
+        raise PlotError(f"{path}: lists no snapshots")
+    return sorted(entries)
+
+
+class History:
+    """history.csv: column names and a float table (nan where a cell says nan or is empty)."""
+
+    def __init__(self, path):
+        self.path = path
+        rows = list(csv.reader(read_text(path).splitlines()))
+        if not rows or "time" not in rows[0]:
+            raise PlotError(f"{path}: no header with a 'time' column")
+        self.columns = [c.strip() for c in rows[0]]
+        self.values = np.array([[_to_float(cell) for cell in row] for row in rows[1:]
+                                if len(row) == len(self.columns)], dtype=float)
+        if self.values.size == 0:
+            raise PlotError(f"{path}: no rows")
+
+    def column(self, name):
+        return self.values[:, self.columns.index(name)]
+
+
+def _to_float(cell):
+    try:
+        return float(cell)
+    except ValueError:
+        return math.nan
+
+
+# --------------------------------------------------------------------------------------
+# Writing a figure without leaving half a file
+# --------------------------------------------------------------------------------------
+
+def save_figure(fig, out, dpi):
+    """Saves `fig` as PNG to a temporary file next to `out`, then renames it to `out`."""
+    folder = os.path.dirname(os.path.abspath(out))
+    if not os.path.isdir(folder):
+        raise PlotError(f"--out {out}: folder {folder} does not exist")
+    temporary = None
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=".coldspray_plot-", suffix=".png", dir=folder)
+        os.close(handle)
+        # tight: the margins fit whatever the tick labels need, nothing is cut off
+        fig.savefig(temporary, format="png", dpi=dpi, bbox_inches="tight", pad_inches=0.05)
+        os.chmod(temporary, 0o666 & ~_umask())  # mkstemp makes it private; a figure is not
+        os.replace(temporary, out)
+    except OSError as e:
+        raise PlotError(f"--out {out}: cannot write ({e.strerror or e})") from None
+    finally:
+        if temporary and os.path.exists(temporary):
+            os.remove(temporary)
+        plt.close(fig)
+
+
+def _umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+# --------------------------------------------------------------------------------------
+# section: cross-sections coloured by a point field
+# --------------------------------------------------------------------------------------
+
+def pick_snapshots(entries, times, pvd_path):
+    """For each requested time, the (time, file) of the nearest snapshot."""
+    first, last = entries[0][0], entries[-1][0]
+    slack = 0.01 * (last - first) if last > first else 1e-12
+    chosen = []
+    for text, t in times:
+        if t < first - slack or t > last + slack:
+            raise PlotError(f"--times {text}: outside the run's snapshots "
+                            f"({first * SECOND_TO_NS:g} to {last * SECOND_TO_NS:g} ns, {pvd_path})")
+        chosen.append(min(entries, key=lambda entry: abs(entry[0] - t)))
+    return chosen
+
+
+def field_values(data, field, path):
+    """A point field by name; a vector field gives its magnitude, NAME.x/.y/.z a component."""
+    name, _, component = field.partition(".")
+    if name not in data.arrays:
+        raise PlotError(f"--field {field}: no such point field in {path} "
+                        f"(available: {', '.join(sorted(data.arrays))})")
+    values = data.arrays[name].astype(float)
+    if values.ndim == 1:
+        if component:
+            raise PlotError(f"--field {field}: '{name}' is a scalar field, it has no components")
+        return values
+    if not component:
+        return np.linalg.norm(values, axis=1)
+    axes = {"x": 0, "y": 1, "z": 2, "r": 0}
+    if axes.get(component, 99) >= values.shape[1]:
+        raise PlotError(f"--field {field}: component '{component}' is not one of x, y, z")
+    return values[:, axes[component]]
+
+
+def slab_mask(y, spacing):
+    """3D runs: the points within 0.6 spacing of y = 0, or else of the middle of their y range."""
+    mask = np.abs(y) < 0.6 * spacing
+    if not mask.any() and len(y):
+        middle = 0.5 * (y.min() + y.max())
+        mask = np.abs(y - middle) < 0.6 * spacing
+    return mask
+
+
+class Section:
+    """The points of one snapshot in the plot plane: horizontal h, vertical v (m), size, values."""
+
+    def __init__(self, h, v, size, values):
+        self.h, self.v, self.size, self.values = h, v, size, values
+
+
+def make_section(data, case, body_ids, fields, path):
+    """Cuts the snapshot: selected bodies, the y ~ 0 slab in 3D, mirrored to -r if axisymmetric."""
+    if "body" not in data.arrays:
+        raise PlotError(f"{path}: no 'body' point array")
+    body = data.arrays["body"]
+    spacing = np.array(case.spacings)[np.clip(body, 0, len(case.spacings) - 1)]
+    keep = np.isin(body, body_ids)
+    if not case.axisymmetric:
+        for b in body_ids:  # each body's slab from its own spacing
+            on_body = body == b
+            keep[on_body] &= slab_mask(data.points[on_body, 1], case.spacings[b])
+    h, v = data.points[keep, 0], data.points[keep, 2]
+    values = {f: field_values(data, f, path)[keep] for f in fields}
+    size = spacing[keep]
+    if case.axisymmetric:  # the points are (r, z): draw the mirror image at -r too
+        h = np.concatenate([h, -h])
+        v, size = np.tile(v, 2), np.tile(size, 2)
+        values = {f: np.tile(values[f], 2) for f in fields}
+    return Section(h, v, size, values)
+
+
+def squares(section):
+    """One square per point, of the point's spacing, in micrometres: neighbours just touch."""
+    half = 0.5 * section.size * METRE_TO_UM
+    h, v = section.h * METRE_TO_UM, section.v * METRE_TO_UM
+    corners = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
+    return np.stack([h, v], axis=1)[:, None, :] + half[:, None, None] * corners[None, :, :]
+
+
+def plot_limits(sections, xlim, ylim):
+    """The panels' common limits (um): the union of the sections unless given."""
+    def span(coordinate):
+        low = min(float(np.min(getattr(s, coordinate) - s.size)) for s in sections if len(s.h))
+        high = max(float(np.max(getattr(s, coordinate) + s.size)) for s in sections if len(s.h))
+        return low * METRE_TO_UM, high * METRE_TO_UM
+    if not any(len(s.h) for s in sections):
+        raise PlotError("section: no points to draw (check --bodies)")
+    return (xlim or span("h")), (ylim or span("v"))
+
+
+def colour_ranges(fields, sections, ranges):
+    """Per field (vmin, vmax): from --range where given, else the drawn values' extremes."""
+    result = {}
+    for field in fields:
+        values = np.concatenate([s.values[field] for s in sections])
+        values = values[np.isfinite(values)]
+        low, high = ranges.get(field, (None, None))
+        if low is None:
+            low = float(values.min()) if values.size else 0.0
+        if high is None:
+            high = float(values.max()) if values.size else 1.0
+        if high <= low:
+            high = low + (abs(low) * 1e-6 or 1.0)
+        result[field] = (low, high)
+    return result
+
+
+def match_ranges(fields, texts):
+    """--range [FIELD=]LOW:HIGH: with a field name, for that field; without, by position."""
+    ranges = {}
+    for n, text in enumerate(texts or []):
+        field, sep, bounds = text.rpartition("=")
+        if not sep:
+            if n >= len(fields):
+                raise PlotError(f"--range {text}: more ranges than fields")
+            field = fields[n]
+        elif field not in fields:
+            raise PlotError(f"--range {text}: '{field}' is not one of the --field values")
+        ranges[field] = parse_range(bounds, f"--range {text}")
+    return ranges
+
+
+FIELD_LABELS = {"eqps": "effective plastic strain", "temperature": "temperature (K)",
+                "pressure": "pressure (Pa)", "von_mises": "von Mises stress (Pa)",
+                "density": "density (kg/m$^3$)", "velocity": "speed (m/s)"}
+
+
+def field_label(field):
+    name, _, component = field.partition(".")
+    if component and name == "velocity":
+        return f"velocity {component} (m/s)"
+    return FIELD_LABELS.get(field, field)
+
+
+def draw_panel(ax, section, field, limits, norm, cmap):
+    collection = PolyCollection(squares(section), array=section.values[field], cmap=cmap,
+                                norm=norm, edgecolors="face", linewidths=0.15, antialiaseds=False)
+    ax.add_collection(collection)
+    ax.set_xlim(*limits[0])
+    ax.set_ylim(*limits[1])
+    ax.set_aspect("equal")
+    return collection
+
+
+# The section figure's layout in inches: panels of fixed size, so equal-aspect panels fill
+# their slots exactly (a layout engine would leave gaps around them).
+LAYOUT = {"left": 0.7, "gap": 0.3, "top": 0.35, "bottom": 0.55, "bar_gap": 0.15,
+          "bar": 0.14, "bar_label": 0.9}
+
+
+def panel_grid(fig_rows, fig_columns, width, height):
+    """A figure with rows x columns axes of width x height inches, and one colour-bar axes
+    per row; returns (figure, axes[row][column], bar axes[row])."""
+    L = LAYOUT
+    fig_width = (L["left"] + fig_columns * width + (fig_columns - 1) * L["gap"] + L["bar_gap"]
+                 + L["bar"] + L["bar_label"])
+    row_height = L["top"] + height + L["bottom"]
+    fig = plt.figure(figsize=(fig_width, fig_rows * row_height))
+    fig_height = fig_rows * row_height
+
+    def rect(x, y, w, h):  # inches from the bottom left -> figure fractions
+        return [x / fig_width, y / fig_height, w / fig_width, h / fig_height]
+
+    axes, bars = [], []
+    for row in range(fig_rows):
+        y = (fig_rows - 1 - row) * row_height + L["bottom"]
+        x = [L["left"] + c * (width + L["gap"]) for c in range(fig_columns)]
+        axes.append([fig.add_axes(rect(x[c], y, width, height)) for c in range(fig_columns)])
+        bar_x = x[-1] + width + L["bar_gap"]
+        bars.append(fig.add_axes(rect(bar_x, y + 0.05 * height, L["bar"], 0.9 * height)))
+    return fig, axes, bars
+
+
+def section_figure(case, snapshots, sections, fields, options):
+    """Rows = fields, columns = times; one colour bar per row."""
+    limits = plot_limits(sections, options.xlim, options.ylim)
+    ranges = colour_ranges(fields, sections, options.ranges)
+    aspect = (limits[1][1] - limits[1][0]) / (limits[0][1] - limits[0][0])
+    width = options.panel_width
+    fig, axes, bars = panel_grid(len(fields), len(sections), width, width * aspect)
+    horizontal = "r" if case.axisymmetric else "x"
+    for row, field in enumerate(fields):
+        norm = matplotlib.colors.Normalize(*ranges[field])
+        for column, (section, (time, _)) in enumerate(zip(sections, snapshots)):
+            ax = axes[row][column]
+            mappable = draw_panel(ax, section, field, limits, norm, options.cmap)
+            ax.set_title(f"t = {time * SECOND_TO_NS:.4g} ns")
+            ax.set_xlabel(f"{horizontal} (\u00b5m)")
+            if column == 0:
+                ax.set_ylabel("z (\u00b5m)")
+            else:
+                ax.tick_params(labelleft=False)
+        fig.colorbar(mappable, cax=bars[row], label=field_label(field))
+    return fig
+
+
+def body_ids_for(case, names):
+    if not names:
+        return list(range(len(case.body_names)))
+    unknown = [n for n in names if n not in case.body_names]
+    if unknown:
+        raise PlotError(f"--bodies {','.join(unknown)}: not in {case.path} "
+                        f"(bodies: {', '.join(case.body_names)})")
+    return [case.body_names.index(n) for n in names]
+
+
+def command_section(options):
+    folder = require_dir(options.dir)
+    case = CaseInfo(os.path.join(folder, "case.resolved.yaml"))
+    fields = split_list(options.field) or ["eqps"]
+    options.ranges = match_ranges(fields, options.range)
+    options.xlim = parse_range(options.xlim, "--xlim") if options.xlim else None
+    options.ylim = parse_range(options.ylim, "--ylim") if options.ylim else None
+    if any(None in lim for lim in (options.xlim, options.ylim) if lim):
+        raise PlotError("--xlim/--ylim: give both ends")
+    times = [(text, parse_time(text)) for text in split_list(options.times)]
+    if not times:
+        raise PlotError("--times: give at least one time")
+    body_ids = body_ids_for(case, split_list(options.bodies))
+    if options.cmap not in matplotlib.colormaps:
+        raise PlotError(f"--cmap {options.cmap}: not a matplotlib colour map")
+    pvd = os.path.join(folder, "snapshots.pvd")
+    snapshots = pick_snapshots(read_pvd(pvd), times, pvd)
+    sections = []
+    for _, path in snapshots:
+        data = read_vtu(path)
+        sections.append(make_section(data, case, body_ids, fields, path))
+    fig = section_figure(case, snapshots, sections, fields, options)
+    save_figure(fig, options.out, options.dpi)
+
+
+# --------------------------------------------------------------------------------------
+# history: history.csv columns against time
+# --------------------------------------------------------------------------------------
+
+QUANTITY_UNITS = {"kinetic": "J", "elastic": "J", "plastic_work": "J", "viscous": "J",
+                  "absorbed": "J", "contact": "J", "total": "J", "vx": "m/s", "vy": "m/s",
+                  "vz": "m/s", "contact_fx": "N", "contact_fy": "N", "contact_fz": "N",
+                  "v_rest": "m/s", "plastic_energy_density": "J/m$^3$", "max_temperature": "K",
+                  "pbcp": "%"}
+
+
+def resolve_column(history, column, body):
+    """BODY.COLUMN when --body is given and the history has it, else COLUMN as written."""
+    candidates = ([f"{body}.{column}"] if body else []) + [column]
+    for name in candidates:
+        if name in history.columns:
+            return name
+    raise PlotError(f"--columns {column}: no column {' or '.join(candidates)} in {history.path} "
+                    f"(available: {', '.join(history.columns)})")
+
+
+def run_labels(dirs, labels_text):
+    labels = split_list([labels_text]) if labels_text else []
+    if labels and len(labels) != len(dirs):
+        raise PlotError(f"--labels: {len(labels)} labels for {len(dirs)} run folders")
+    return labels or [os.path.basename(os.path.normpath(d)) or d for d in dirs]
+
+
+def history_figure(histories, labels, columns, body, panel_width):
+    fig, axes = plt.subplots(len(columns), 1, squeeze=False, sharex=True, layout="constrained",
+                             figsize=(panel_width, 0.5 + 2.2 * len(columns)))
+    for ax, column in zip(axes[:, 0], columns):
+        for history, label in zip(histories, labels):
+            name = resolve_column(history, column, body)
+            ax.plot(history.column("time") * SECOND_TO_NS, history.column(name), label=label)
+        unit = QUANTITY_UNITS.get(column.rpartition(".")[2])
+        label = resolve_column(histories[0], column, body)
+        ax.set_ylabel(f"{label} ({unit})" if unit else label)
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel("time (ns)")
+    if len(histories) > 1:
+        axes[0, 0].legend()
+    return fig
+
+
+def command_history(options):
+    columns = split_list(options.columns)
+    if not columns:
+        raise PlotError("--columns: give at least one column")
+    labels = run_labels(options.dirs, options.labels)
+    histories = [History(os.path.join(require_dir(d), "history.csv")) for d in options.dirs]
+    for history in histories:  # every column must exist before anything is drawn
+        for column in columns:
+            resolve_column(history, column, options.body)
+    fig = history_figure(histories, labels, columns, options.body, options.panel_width)
+    save_figure(fig, options.out, options.dpi)
+
+
+# --------------------------------------------------------------------------------------
+# info: what a run folder holds
+# --------------------------------------------------------------------------------------
+
+def command_info(options):
+    folder = require_dir(options.dir)
+    case = CaseInfo(os.path.join(folder, "case.resolved.yaml"))
+    print(f"geometry: {case.geometry}")
+    for name, spacing in zip(case.body_names, case.spacings):
+        print(f"body {name}: spacing {spacing * METRE_TO_UM:g} um")
+    pvd = os.path.join(folder, "snapshots.pvd")
+    if os.path.exists(pvd):
+        entries = read_pvd(pvd)
+        print("snapshots (ns): " + ", ".join(f"{t * SECOND_TO_NS:.4g}" for t, _ in entries))
+        data = read_vtu(entries[0][1])
+        print("point fields: " + ", ".join(
+            f"{n}[{a.shape[1]}]" if a.ndim > 1 else n for n, a in data.arrays.items()))
+    history = os.path.join(folder, "history.csv")
+    if os.path.exists(history):
+        print("history columns: " + ", ".join(History(history).columns))
+
+
+# --------------------------------------------------------------------------------------
+# Command line
+# --------------------------------------------------------------------------------------
+
+def build_parser():
+    parser = argparse.ArgumentParser(
+        prog="coldspray_plot.py", description="PNG figures from a coldspray run's output folder.")
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    section = commands.add_parser("section", help="cross-sections coloured by a point field")
+    section.add_argument("dir", help="run output folder")
+    section.add_argument("--times", action="append", required=True,
+                         help="times, comma-separated: 10ns,40ns or 8e-8 (seconds) or 0.08us")
+    section.add_argument("--field", action="append",
+                         help="point field (repeatable; default eqps); vectors: NAME or NAME.x")
+    section.add_argument("--bodies", action="append", help="bodies to draw (default all)")
+    section.add_argument("--range", action="append",
+                         help="colour range [FIELD=]LOW:HIGH; without FIELD= in --field order")
+    section.add_argument("--xlim", help="horizontal limits in um, LOW:HIGH")
+    section.add_argument("--ylim", help="vertical (z) limits in um, LOW:HIGH")
+    section.add_argument("--cmap", default="viridis", help="matplotlib colour map")
+    section.add_argument("--panel-width", type=float, default=3.2, help="inches per panel")
+    section.add_argument("--dpi", type=int, default=150)
+    section.add_argument("--out", required=True, help="PNG file to write")
+    section.set_defaults(run=command_section)
+
+    history = commands.add_parser("history", help="history.csv columns against time")
+    history.add_argument("dirs", nargs="+", help="run output folders (overlaid)")
+    history.add_argument("--columns", action="append", required=True,
+                         help="columns, comma-separated (with --body: BODY.COLUMN)")
+    history.add_argument("--body", help="body whose columns to take, e.g. particle")
+    history.add_argument("--labels", help="legend labels, comma-separated (default folder names)")
+    history.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    history.add_argument("--dpi", type=int, default=150)
+    history.add_argument("--out", required=True, help="PNG file to write")
+    history.set_defaults(run=command_history)
+
+    info = commands.add_parser("info", help="list snapshot times, point fields and columns")
+    info.add_argument("dir", help="run output folder")
+    info.set_defaults(run=command_info)
+    return parser
+
+
+def main(argv=None):
+    options = build_parser().parse_args(argv)
+    try:
+        options.run(options)
+    except PlotError as e:
+        print(f"coldspray_plot: error: {e}", file=sys.stderr)
+        return EXIT_ERROR
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
