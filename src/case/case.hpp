@@ -102,6 +102,32 @@ struct Contact {
   friend bool operator==(const Contact&, const Contact&) = default;
 };
 
+enum class BondingModel { None, Strain, Energy };
+
+// The direct bonding model (thesis Chapter 4). The thesis' code measured rates per microsecond;
+// here they are per second (its Gdot_c = 2.271 J/m^2/us is 2.271e6 J/m^2/s).
+struct Bonding {
+  BondingModel model = BondingModel::None;
+  double critical_strain = 1.4;           // eps_c, eq 4.4 (thesis §4.1.4's example)
+  double critical_strain_rate = 8.5e8;    // 1/s (850 /us)
+  double critical_energy = 1503.74;       // G_c, J/m^2, eq 4.16b (thesis §5.2.2)
+  double critical_energy_rate = 2.271e6;  // Gdot_c, J/m^2/s (2.271 J/m^2/us)
+  // eps_bond >= floor eps_c and G_bond >= floor G_c: the logarithm of eqs 4.4 and 4.16b
+  // exceeds 1 at jetting rates and would make them negative (docs/bonding.md).
+  double floor = 0.1;
+
+  friend bool operator==(const Bonding&, const Bonding&) = default;
+};
+
+// The impact metrics and the bonded verdict (thesis §5.2.2).
+struct ImpactMetrics {
+  double rest_speed_limit = 60.0;  // m/s: v_rest averages points at or below this speed
+  double bonded_pbcp = 5.0;        // %: bonded needs pbcp >= this
+  double bonded_rest_speed = 0.6;  // m/s: and |v_rest| <= this
+
+  friend bool operator==(const ImpactMetrics&, const ImpactMetrics&) = default;
+};
+
 struct Probe {
   std::string name;
   Vec3 position = Vec3::Zero();
@@ -128,6 +154,8 @@ struct Case {
   Grid grid;
   Solver solver;
   Contact contact;
+  Bonding bonding;
+  ImpactMetrics metrics;
   Output output;
 };
 

@@ -41,6 +41,10 @@ inline constexpr Names<Geometry, 2> kGeometryNames{
 inline constexpr Names<ShapeFunction, 2> kShapeFunctionNames{
     {{{"linear", ShapeFunction::Linear}, {"gimp", ShapeFunction::Gimp}}}};
 
+inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingModel::None},
+                                                             {"strain", BondingModel::Strain},
+                                                             {"energy", BondingModel::Energy}}}};
+
 inline constexpr std::array<std::string_view, 14> kProbeFields{
     "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
     "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
@@ -126,6 +130,25 @@ void fields(IO& io, Contact& c) {
 }
 
 template <class IO>
+void fields(IO& io, Bonding& b) {
+  io.scalar("model", b.model, kBondingModelNames, kOptional);
+  io.quantity("critical_strain", b.critical_strain, units::kDimensionless, kOptional, kPositive);
+  io.quantity("critical_strain_rate", b.critical_strain_rate, units::kRate, kOptional, kPositive);
+  io.quantity("critical_energy", b.critical_energy, units::kEnergyPerArea, kOptional, kPositive);
+  io.quantity("critical_energy_rate", b.critical_energy_rate, units::kEnergyPerAreaPerTime,
+              kOptional, kPositive);
+  io.quantity("floor", b.floor, units::kDimensionless, kOptional, kFraction);
+}
+
+template <class IO>
+void fields(IO& io, ImpactMetrics& m) {
+  io.quantity("rest_speed_limit", m.rest_speed_limit, units::kVelocity, kOptional, kPositive);
+  io.quantity("bonded_pbcp", m.bonded_pbcp, units::kDimensionless, kOptional, kNonNegative);
+  io.check(m.bonded_pbcp <= 100.0, "bonded_pbcp", "is a percentage: at most 100");
+  io.quantity("bonded_rest_speed", m.bonded_rest_speed, units::kVelocity, kOptional, kNonNegative);
+}
+
+template <class IO>
 void fields(IO& io, Probe& p) {
   io.scalar("name", p.name, Text{}, kRequired);
   io.vector("position", p.position, units::kLength, kRequired);
@@ -152,6 +175,8 @@ void fields(IO& io, Case& c) {
   io.section("grid", c.grid, kRequired);
   io.section("solver", c.solver, kRequired);
   io.section("contact", c.contact, kOptional);
+  io.section("bonding", c.bonding, kOptional);
+  io.section("metrics", c.metrics, kOptional);
   io.section("output", c.output, kOptional);
 }
 

@@ -38,6 +38,7 @@ std::vector<BodyMetrics> body_metrics(const mpm::State& s) {
       for (std::size_t o = 0; o < bodies; ++o)
         for (int d = 0; d < 3; ++d)
           m.contact_force[d] += s.contact_result.impulse[b * bodies + o][d] / s.dt;
+    m.impact = impact_measures(s, b);
     out.push_back(std::move(m));
   }
   return out;

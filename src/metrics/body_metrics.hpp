@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "metrics/impact_metrics.hpp"
 #include "mpm/state.hpp"
 
 namespace coldspray::metrics {
@@ -20,6 +21,7 @@ struct BodyMetrics {
   double mean_eqps = 0.0;                 // mass-averaged
   double max_temperature = 0.0;           // K
   std::array<double, 3> contact_force{};  // from all other bodies over the last step, N
+  ImpactMeasures impact;
 };
 
 // In index order: independent of the thread count.

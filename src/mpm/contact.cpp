@@ -20,7 +20,8 @@ std::int32_t ContactNodes::add(std::size_t node) {
   body_count_[s] = 0;
   for (int e = 0; e < kMaxBodiesPerNode; ++e) {
     const std::size_t f = flat(s, e);
-    mass[f] = 0.0;
+    mass[f] = bond_sum[f] = 0.0;
+    surface_count[f] = 0;
     for (int d = 0; d < 3; ++d)
       momentum[d][f] = force[d][f] = mass_gradient[d][f] = correction[d][f] = 0.0;
   }
@@ -56,6 +57,9 @@ void ContactNodes::grow(std::size_t slots) {
   for (auto& v : pair_normal) v.resize(slots * kMaxPairsPerNode);
   master_surface.resize(slots * kMaxPairsPerNode);
   other_surface.resize(slots * kMaxPairsPerNode);
+  pair_touching.resize(slots * kMaxPairsPerNode);
+  bond_sum.resize(slots * kMaxBodiesPerNode);
+  surface_count.resize(slots * kMaxBodiesPerNode);
 }
 
 namespace {
@@ -151,8 +155,18 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
         for (int d = 0; d < 3; ++d) c.pair_normal[d][k] = n[d];
         c.master_surface[k] = -std::numeric_limits<double>::infinity();
         c.other_surface[k] = std::numeric_limits<double>::infinity();
+        c.pair_touching[k] = 0;
       }
   }
+}
+
+double nodal_bond(const ContactNodes& c, std::int32_t slot, int e1, int e2) {
+  double sum = 0.0;
+  for (const int e : {e1, e2}) {
+    const std::size_t f = ContactNodes::flat(slot, e);
+    if (c.surface_count[f] > 0) sum += c.bond_sum[f] / c.surface_count[f];
+  }
+  return 0.5 * sum;
 }
 
 void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
@@ -170,16 +184,20 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
         const Vector3d n = load(c.pair_normal, k);
         const Vector3d pm = load(c.momentum, fm), ps = load(c.momentum, fs);
         // Eq 3.29: the bodies approach when (m_s p_m - m_m p_s) . n > 0.
-        if ((ms * pm - mm * ps).dot(n) <= 0.0) continue;
+        const bool approaching = (ms * pm - mm * ps).dot(n) > 0.0;
         // The gap check: the surfaces meet by the end of the step, moving at the nodal velocities.
-        if (rule.gap_check &&
-            c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) > 0.0)
-          continue;
+        const bool touching =
+            rule.gap_check
+                ? c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) <= 0.0
+                : approaching;
+        c.pair_touching[k] = touching;
+        const bool bonded = rule.bonding && bond_holds(nodal_bond(c, slot, e1, e2));
+        if (!bonded && !(approaching && touching)) continue;
         // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
         const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
         const double normal = stick.dot(n);
-        Vector3d dp = normal * n;
-        if (rule.friction > 0.0) {
+        Vector3d dp = bonded ? stick : Vector3d(normal * n);
+        if (!bonded && rule.friction > 0.0) {
           const Vector3d tangential = stick - dp;
           const double t = tangential.norm(), limit = rule.friction * std::abs(normal);
           dp += t > limit ? tangential * (limit / t) : tangential;

@@ -56,6 +56,14 @@ class ContactNodes {
   std::array<std::vector<double>, 3> pair_normal;
   std::vector<double> master_surface;
   std::vector<double> other_surface;
+  // Whether the pair is in contact at the node this step (the surfaces meet, or without the gap
+  // check the bodies approach): its bodies' surface points there are in the bonding set S.
+  std::vector<std::uint8_t> pair_touching;
+
+  // Per entry, for the nodal bonding parameter (eq 4.6): sum over the body's surface points
+  // covering the node of D_bond N_I(x_p), and their number.
+  std::vector<double> bond_sum;
+  std::vector<std::uint32_t> surface_count;
 
  private:
   void grow(std::size_t slots);
@@ -74,6 +82,8 @@ struct ContactRule {
   // Touch only where the surfaces meet (ContactNodes::master_surface, other_surface); without,
   // the thesis' approach test alone.
   bool gap_check = true;
+  // The direct bonding model is on: bonded nodes stick (thesis §4.1.1).
+  bool bonding = false;
 };
 
 // What the contact step did, for the history; and its per-step scratch.
@@ -91,17 +101,25 @@ struct ContactResult {
 // §3.5.4, `rule.normal`) and the unit normal from its mass gradient (eq 3.30). `held` is the
 // grid's NodeConstraint bits: a held velocity component (a symmetry or roller plane through the
 // node) is removed from the normal, which cannot point through that plane. Resets the surfaces
-// for the gap measurement (mpm/phases.hpp, measure_contact_surfaces).
+// for the gap measurement (mpm/phases.hpp, gather_contact_points).
 void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
                             const std::vector<std::uint8_t>& held, int bodies,
                             ContactResult& result);
 
 // For every pair with a normal, in a fixed order: the approach test (eq 3.29), with the gap check
 // the surfaces meeting by the end of the step, and then the sticking correction (eq 3.31)
-// reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Each
-// correction changes the two bodies' momenta by equal and opposite amounts, and their forces by
-// the same over dt.
+// reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Where
+// the pair is bonded (nodal D_bond of eq 4.7 >= 1) the correction is applied in full, normal and
+// tangential, approaching or not: the bond force. Each correction changes the two bodies'
+// momenta by equal and opposite amounts, and their forces by the same over dt.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
                      ContactResult& result);
+
+// Eqs 4.6-4.7: the pair's global nodal bonding parameter, the mean of the two bodies' nodal
+// values, each sum_p D_bond N_I / n_sp over its surface points covering the node.
+double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2);
+
+// Whether a bonded node stays bonded. Always, for now: the place for a debonding law.
+inline bool bond_holds(double nodal_bond_value) { return nodal_bond_value >= 1.0; }
 
 }  // namespace coldspray::mpm

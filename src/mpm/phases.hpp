@@ -124,13 +124,16 @@ void map_bodies_to_contact_nodes(State& s) {
   });
 }
 
-// For the gap check: along each contact pair's normal, the furthest reach of the master body's
-// points (x_p . n plus the point's half-width along n) and the nearest reach of the other's, over
-// the points whose support covers the node. Minima and maxima are exact in any order, and the
-// slab colouring keeps threads off each other's nodes.
+// What the contact step needs from the points near contact nodes. For the gap check: along each
+// pair's normal, the furthest reach of the master body's points (x_p . n plus the point's
+// half-width along n) and the nearest reach of the other's, over the points covering the node.
+// For bonding: each body's sum of D_bond N_I over its surface points there, and their number
+// (eq 4.6). Minima and maxima are exact in any order, the sums run in slab order, and the slab
+// colouring keeps threads off each other's nodes.
 template <class Shape, bool Axisymmetric>
-void measure_contact_surfaces(State& s) {
-  if (s.contact.size() == 0 || !s.contact_rule.gap_check) return;
+void gather_contact_points(State& s) {
+  const bool gap = s.contact_rule.gap_check, bonding = s.contact_rule.bonding;
+  if (s.contact.size() == 0 || !(gap || bonding)) return;
   ContactNodes& cn = s.contact;
   const Points& P = s.points;
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
@@ -141,6 +144,12 @@ void measure_contact_surfaces(State& s) {
       const std::int32_t slot = s.grid.contact_slot[node];
       if (slot < 0 || w == 0.0) return;
       const int e = cn.find(slot, b);
+      if (bonding && P.surface[p]) {
+        const std::size_t f = ContactNodes::flat(slot, e);
+        cn.bond_sum[f] += P.bond[p] * w;
+        ++cn.surface_count[f];
+      }
+      if (!gap) return;
       for (int o = 0; o < cn.body_count(slot); ++o) {
         if (o == e) continue;
         const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
@@ -157,6 +166,43 @@ void measure_contact_surfaces(State& s) {
       }
     });
   });
+}
+
+// The bonding set S (thesis §4.1.1): a surface point is in contact this step where a node it
+// covers has its body touching another (ContactNodes::pair_touching); its contact normal, the
+// weighted mean of those pairs' normals turned outward from its own body, orients the shear
+// part of its plastic strain (bonding/bond_law.hpp). Writes only its own point.
+template <class Shape, bool Axisymmetric>
+void mark_touching_points(State& s) {
+  if (!s.contact_rule.bonding) return;
+  Points& P = s.points;
+  const ContactNodes& cn = s.contact;
+  const long n = static_cast<long>(P.size());
+#pragma omp parallel for schedule(static)
+  for (long pi = 0; pi < n; ++pi) {
+    const auto p = static_cast<std::size_t>(pi);
+    P.touching[p] = 0;
+    if (!P.surface[p] || cn.size() == 0 || !s.near_contact[cell_of(s, p)]) continue;
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const int b = P.body[p];
+    double normal[3] = {0.0, 0.0, 0.0};
+    st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
+      const std::int32_t slot = s.grid.contact_slot[node];
+      if (slot < 0 || w == 0.0) return;
+      const int e = cn.find(slot, b);
+      for (int o = 0; o < cn.body_count(slot); ++o) {
+        if (o == e) continue;
+        const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
+        if (!cn.pair_touching[k]) continue;
+        P.touching[p] = 1;
+        const double outward = cn.pair_master[k] == e ? w : -w;
+        for (int d = 0; d < 3; ++d) normal[d] += outward * cn.pair_normal[d][k];
+      }
+    });
+    const double norm =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    for (int d = 0; d < 3; ++d) P.contact_normal[d][p] = norm > 0.0 ? normal[d] / norm : 0.0;
+  }
 }
 
 // The nodal mass, momentum and force a point of body b sees at node n: its own body's at a

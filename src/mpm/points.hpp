@@ -44,6 +44,14 @@ struct Points {
   std::vector<double> contact_work;    // accumulated work of the contact corrections, J
   std::vector<std::uint16_t> body;     // index into the run's body list
   std::vector<std::uint8_t> surface;   // 1 on the body's initial surface (bonding set S)
+  std::vector<double> initial_z;       // z at t = 0, m (crater depth)
+
+  // Bonding (thesis Chapter 4): D_bond, and whether the surface point has touched another
+  // body (ever, and in this step, with its body's outward contact normal).
+  std::vector<double> bond;
+  std::vector<std::uint8_t> touched;
+  std::vector<std::uint8_t> touching;
+  std::array<std::vector<double>, 3> contact_normal;
 
   // Per-step scratch, kept here so the step loop allocates nothing.
   std::array<std::vector<double>, 3> displacement;  // x^{k+1} - x^k from the grid velocities

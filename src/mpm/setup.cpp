@@ -19,6 +19,18 @@ namespace {
 
 using case_file::Vec3;
 
+// A body's diameter across the impact axis at t = 0: the x extent of its points plus one spacing
+// (in r-z, twice the largest radius plus one spacing), for the flattening ratio.
+double lateral_diameter(const std::vector<Vec3>& points, double spacing,
+                        case_file::Geometry geometry) {
+  double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+  for (const Vec3& x : points) {
+    lo = std::min(lo, x[0]);
+    hi = std::max(hi, x[0]);
+  }
+  return geometry == case_file::Geometry::Axisymmetric ? 2.0 * hi + spacing : hi - lo + spacing;
+}
+
 std::string body_key(const case_file::Body& b, const char* field) {
   return fmt::format("bodies.{}.{}", b.name, field);
 }
@@ -261,6 +273,9 @@ State build_state(const case_file::Case& c) {
     const case_file::Body& body = c.bodies[b];
     BodyRange range{body.name, p, p + seeded[b].points.position.size(),
                     c.materials.at(body.material), body.spacing};
+    range.initial_velocity = {body.velocity[0], body.velocity[1], body.velocity[2]};
+    range.initial_diameter =
+        lateral_diameter(seeded[b].points.position, body.spacing, c.solver.geometry);
     const materials::PointState initial =
         materials::initial_state(range.material, body.temperature);
     const double c0 = materials::wave_speed(range.material, initial);
@@ -276,6 +291,7 @@ State build_state(const case_file::Case& c) {
       P.sound_speed[p] = c0;
       P.body[p] = static_cast<std::uint16_t>(b);
       P.surface[p] = seeded[b].points.outside[i] != 0;
+      P.initial_z[p] = P.position[2][p];
     }
     s.bodies.push_back(std::move(range));
   }
@@ -304,6 +320,9 @@ State build_state(const case_file::Case& c) {
   s.contact_rule.normal = c.contact.normal;
   s.contact_rule.friction = c.contact.friction;
   s.contact_rule.gap_check = c.contact.gap_check;
+  s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid.cell_size);
+  s.contact_rule.bonding = s.bond_law.enabled();
+  s.impact_metrics = c.metrics;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
     if (c.contact.normal == case_file::ContactNormal::Body &&

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bonding/bond_law.hpp"
 #include "case/case.hpp"
 #include "materials/material.hpp"
 #include "mpm/contact.hpp"
@@ -23,6 +24,8 @@ struct BodyRange {
   std::size_t end = 0;
   materials::Material material;
   double spacing = 0.0;
+  std::array<double, 3> initial_velocity{};  // m/s
+  double initial_diameter = 0.0;             // lateral extent at t = 0, m
 };
 
 // A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give
@@ -72,6 +75,8 @@ struct State {
   ContactNodes contact;
   ContactRule contact_rule;
   ContactResult contact_result;  // of the last step
+  bonding::BondLaw bond_law;     // D_bond evolution (thesis Chapter 4)
+  case_file::ImpactMetrics impact_metrics;
 
   double time = 0.0;
   double dt = 0.0;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bonding/bond_law.hpp"
 #include "core/error.hpp"
 #include "materials/model_dispatch.hpp"
 #include "materials/stress_update_kernel.hpp"
@@ -150,6 +151,14 @@ double update_body_stress(State& s, const BodyRange& body) {
         P.plastic_work[p] +=
             state.flow_stress * (state.eqps - eqps_before) * P.volume0[p] * state.J;
       P.sound_speed[p] = materials::point_wave_speed(models, state);
+      // Eqs 4.5 / 4.16a: D_bond grows at surface points in contact (the set S).
+      if (P.touching[p]) {
+        P.touched[p] = 1;
+        const Eigen::Vector3d n(P.contact_normal[0][p], P.contact_normal[1][p],
+                                P.contact_normal[2][p]);
+        P.bond[p] +=
+            bonding::bond_increment(s.bond_law, state.stress, state.eqps - eqps_before, n, dt);
+      }
 
       for (int d = 0; d < 3; ++d) {
         P.position[d][p] += P.displacement[d][p];
@@ -183,9 +192,10 @@ void musl_step(State& s) {
   integrate_grid_momentum(s);                           // step 3, eq 3.28
   choose_contact_normals(s.contact, s.contact_rule,     // step 4, eq 3.30
                          s.constraint, bodies, s.contact_result);
-  measure_contact_surfaces<Shape, Axisymmetric>(s);         //   and the gap between surfaces
+  gather_contact_points<Shape, Axisymmetric>(s);            //   surfaces, nodal D_bond (4.6)
   resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
                   s.contact_result);
+  mark_touching_points<Shape, Axisymmetric>(s);     //   the bonding set S (§4.1.1)
   apply_node_constraints(s, /*force_too=*/true);    //   held nodes stay held
   update_point_velocities<Shape, Axisymmetric>(s);  // step 7, eq 3.32
   remap_momentum<Shape, Axisymmetric>(s);           // step 8, eq 3.33 (MUSL)

@@ -31,6 +31,7 @@ void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   cloud.add_scalar("von_mises", von_mises);
   cloud.add_scalar("density", density);
   cloud.add_byte("surface", P.surface);
+  cloud.add_scalar("bond", P.bond);
   cloud.write(path);
 }
 

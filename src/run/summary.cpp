@@ -1,5 +1,6 @@
 #include "run/summary.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -27,7 +28,15 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                  {"total_initial", s.total_energy_initial},
                  {"relative_error", s.energy_relative_error()}};
   nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
-  for (const auto& b : s.bodies)
+  // JSON has no NaN: an undefined measure (cor of a body that started at rest) is null.
+  auto number = [](double x) {
+    return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
+  };
+  int moving = 0, bonded = 0;
+  for (const auto& b : s.bodies) {
+    const metrics::ImpactMeasures& m = b.impact;
+    moving += m.moving;
+    bonded += m.bonded;
     bodies[b.name] = {{"mass", b.mass},
                       {"velocity", b.velocity},
                       {"centroid", b.centroid},
@@ -35,8 +44,24 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                       {"extent_max", b.extent_max},
                       {"max_eqps", b.max_eqps},
                       {"mean_eqps", b.mean_eqps},
-                      {"max_temperature", b.max_temperature}};
+                      {"max_temperature", b.max_temperature},
+                      {"cor", number(m.cor)},
+                      {"v_rest", number(m.v_rest)},
+                      {"abp", m.abp},
+                      {"pbcp", m.pbcp},
+                      {"bonded", m.bonded},
+                      {"plastic_energy_density", m.plastic_energy_density},
+                      {"jetted_fraction", m.jetted_fraction},
+                      {"crater_depth", m.crater_depth},
+                      {"flattening_ratio", m.flattening_ratio},
+                      {"contact_area", m.contact_area},
+                      {"bonded_area", m.bonded_area}};
+  }
   j["bodies"] = bodies;
+  // The verdict over the bodies that moved in z at t = 0 (the particles).
+  j["system"] = {{"bonded", moving > 0 && bonded == moving},
+                 {"moving_bodies", moving},
+                 {"bonded_bodies", bonded}};
   io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 

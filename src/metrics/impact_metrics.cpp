@@ -1,0 +1,90 @@
+#include "metrics/impact_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace coldspray::metrics {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The surface area a point stands for: V^(2/3) in 3D; in r-z the ring 2 pi r a of side
+// a = sqrt(V / (2 pi r)).
+double point_area(const mpm::State& s, std::size_t p) {
+  const mpm::Points& P = s.points;
+  const double V = P.volume0[p] * P.J[p];
+  if (s.geometry != case_file::Geometry::Axisymmetric) return std::cbrt(V * V);
+  const double r = P.position[0][p];
+  return 2.0 * std::numbers::pi * r * std::sqrt(V / (2.0 * std::numbers::pi * r));
+}
+
+}  // namespace
+
+ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
+  const mpm::Points& P = s.points;
+  const mpm::BodyRange& r = s.bodies[body];
+  const case_file::ImpactMetrics& limits = s.impact_metrics;
+  const bool axisymmetric = s.geometry == case_file::Geometry::Axisymmetric;
+  ImpactMeasures m;
+  m.moving = r.initial_velocity[2] != 0.0;
+
+  double mass = 0.0, momentum_z = 0.0, centroid[2] = {0.0, 0.0}, volume0 = 0.0, plastic = 0.0;
+  double top = std::numeric_limits<double>::lowest();
+  for (std::size_t p = r.begin; p < r.end; ++p) {
+    mass += P.mass[p];
+    momentum_z += P.mass[p] * P.velocity[2][p];
+    for (int d = 0; d < 2; ++d) centroid[d] += P.mass[p] * P.position[d][p];
+    volume0 += P.volume0[p];
+    plastic += P.plastic_work[p];
+    top = std::max(top, P.initial_z[p]);
+  }
+  if (axisymmetric)
+    centroid[0] = centroid[1] = 0.0;  // the axis is r = 0
+  else
+    for (double& c : centroid) c /= mass;
+  m.cor = m.moving ? -(momentum_z / mass) / r.initial_velocity[2] : kNaN;
+  m.plastic_energy_density = plastic / volume0;
+
+  double rest_mass = 0.0, rest_momentum = 0.0, jetted = 0.0, touched = 0.0, bonded = 0.0;
+  double bond_sum = 0.0, radius = 0.0;
+  std::size_t touched_points = 0;
+  for (std::size_t p = r.begin; p < r.end; ++p) {
+    const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
+    const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const double dx = P.position[0][p] - centroid[0], dy = P.position[1][p] - centroid[1];
+    const double radial = std::hypot(dx, dy);
+    const bool outward = radial > 0.0 && v[0] * dx + v[1] * dy > 0.0;
+    if (speed <= limits.rest_speed_limit) {
+      rest_mass += P.mass[p];
+      rest_momentum += P.mass[p] * v[2];
+    }
+    if (speed > limits.rest_speed_limit && outward)
+      jetted += P.mass[p];
+    else
+      radius = std::max(radius, radial);
+    if (P.surface[p] && P.initial_z[p] > top - 0.75 * r.spacing)
+      m.crater_depth = std::max(m.crater_depth, P.initial_z[p] - P.position[2][p]);
+    if (!P.touched[p]) continue;
+    ++touched_points;
+    bond_sum += P.bond[p];
+    m.contact_area += point_area(s, p);
+    if (P.bond[p] > 0.0) touched += P.mass[p];
+    if (P.bond[p] >= 1.0) {
+      bonded += P.mass[p];
+      m.bonded_area += point_area(s, p);
+    }
+  }
+  m.v_rest = rest_mass > 0.0 ? rest_momentum / rest_mass : kNaN;
+  m.jetted_fraction = jetted / mass;
+  m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
+  m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;
+  m.pbcp = touched > 0.0 ? 100.0 * bonded / touched : 0.0;
+  m.bonded =
+      m.moving && m.pbcp >= limits.bonded_pbcp && std::abs(m.v_rest) <= limits.bonded_rest_speed;
+  return m;
+}
+
+}  // namespace coldspray::metrics

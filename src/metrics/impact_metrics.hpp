@@ -1,0 +1,36 @@
+// The impact measures of a body (thesis §5.2.2 and Chapter 4) and the bonded verdict.
+#pragma once
+
+#include <cstddef>
+
+#include "mpm/state.hpp"
+
+namespace coldspray::metrics {
+
+struct ImpactMeasures {
+  // Restitution ratio: -v_z / v0_z of the mass-averaged velocity; > 0 moving away. NaN for a
+  // body that started at rest in z.
+  double cor = 0.0;
+  // Mass-averaged z velocity of the points no faster than metrics.rest_speed_limit (thesis
+  // §5.2.2's v_rest, whose 60 m/s filter leaves jetted material out), m/s; NaN if none is.
+  double v_rest = 0.0;
+  double abp = 0.0;   // mean D_bond over the surface points that have touched another body
+  double pbcp = 0.0;  // % of contacted mass with D_bond >= 1 (eq 5.1), see docs/bonding.md
+  double plastic_energy_density = 0.0;  // plastic work over the reference volume (eq 4.15), J/m^3
+  // Mass fraction of jetted points: faster than rest_speed_limit and moving away from the body's
+  // axis (the vertical through its centroid).
+  double jetted_fraction = 0.0;
+  // Deepest sinking of the points that started in the body's top layer, m (the crater of a
+  // substrate).
+  double crater_depth = 0.0;
+  // Diameter across the axis of the body's points that are not jetted, over that at t = 0.
+  double flattening_ratio = 0.0;
+  double contact_area = 0.0;  // surface area of the points that touched another body, m^2
+  double bonded_area = 0.0;   // of those with D_bond >= 1, m^2
+  bool moving = false;        // started with a z velocity: cor and the verdict apply
+  bool bonded = false;        // pbcp >= metrics.bonded_pbcp and |v_rest| <= bonded_rest_speed
+};
+
+ImpactMeasures impact_measures(const mpm::State& s, std::size_t body);
+
+}  // namespace coldspray::metrics
