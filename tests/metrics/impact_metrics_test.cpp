@@ -1,0 +1,106 @@
+// The impact measures counted by hand on a few points: PBCP (eq 5.1), v_rest's 60 m/s filter
+// (thesis §5.2.2), ABP, cor, jetting and the verdict; and the nodal D_bond of eqs 4.6-4.7.
+#include "metrics/impact_metrics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mpm/contact.hpp"
+
+namespace coldspray::metrics {
+namespace {
+
+// Six equal points of one 3D body that came down at 800 m/s, set by hand.
+mpm::State six_points() {
+  mpm::State s;
+  s.geometry = case_file::Geometry::ThreeD;
+  mpm::Points& P = s.points;
+  P.resize(6);
+  mpm::BodyRange body;
+  body.name = "particle";
+  body.begin = 0;
+  body.end = 6;
+  body.spacing = 1e-6;
+  body.initial_velocity = {0.0, 0.0, -800.0};
+  body.initial_diameter = 4e-6;
+  s.bodies.push_back(body);
+  const double x[6] = {-1e-6, 1e-6, 0.0, 0.0, 3e-6, -1.5e-6};
+  const double vz[6] = {1.0, 2.0, 0.5, 0.5, 10.0, 0.0};
+  const double vx[6] = {0.0, 0.0, 0.0, 0.0, 500.0, 0.0};  // point 4 jets outward
+  const double bond[6] = {1.5, 0.4, 0.0, 1.0, 2.0, 0.0};
+  const std::uint8_t touched[6] = {1, 1, 1, 1, 1, 0};
+  for (std::size_t p = 0; p < 6; ++p) {
+    P.mass[p] = 1e-15;
+    P.volume0[p] = 1e-18;
+    P.J[p] = 1.0;
+    P.position[0][p] = x[p];
+    P.velocity[0][p] = vx[p];
+    P.velocity[2][p] = vz[p];
+    P.bond[p] = bond[p];
+    P.touched[p] = touched[p];
+    P.surface[p] = 1;
+  }
+  return s;
+}
+
+TEST(ImpactMetrics, CountsByHand) {
+  const mpm::State s = six_points();
+  const ImpactMeasures m = impact_measures(s, 0);
+  // D_bond > 0 at points 0, 1, 3, 4; >= 1 at 0, 3, 4: 3 of 4.
+  EXPECT_NEAR(m.pbcp, 75.0, 1e-12);
+  // ABP over the five touched points: (1.5 + 0.4 + 0 + 1 + 2) / 5.
+  EXPECT_NEAR(m.abp, 0.98, 1e-12);
+  // v_rest leaves out point 4 (|v| = 500.1 m/s): (1 + 2 + 0.5 + 0.5 + 0) / 5.
+  EXPECT_NEAR(m.v_rest, 0.8, 1e-12);
+  // cor: mean v_z = 14 / 6 against 800 m/s downward, moving away.
+  EXPECT_NEAR(m.cor, 14.0 / 6.0 / 800.0, 1e-15);
+  // Point 4 is fast and moves away from the axis through the centroid (x = 1.5e-6 / 6).
+  EXPECT_NEAR(m.jetted_fraction, 1.0 / 6.0, 1e-15);
+  // Five touched points of area (1e-18)^(2/3) = 1e-12 m^2; three bonded.
+  EXPECT_NEAR(m.contact_area, 5e-12, 1e-24);
+  EXPECT_NEAR(m.bonded_area, 3e-12, 1e-24);
+  // Not bonded: |v_rest| 0.8 > 0.6 m/s, though pbcp >= 5 %.
+  EXPECT_TRUE(m.moving);
+  EXPECT_FALSE(m.bonded);
+}
+
+TEST(ImpactMetrics, BondedWhenBothTolerancesHold) {
+  mpm::State s = six_points();
+  s.points.velocity[2][1] = 0.0;  // v_rest = (1 + 0 + 0.5 + 0.5 + 0) / 5 = 0.4 m/s
+  const ImpactMeasures m = impact_measures(s, 0);
+  EXPECT_NEAR(m.v_rest, 0.4, 1e-12);
+  EXPECT_TRUE(m.bonded);
+  s.impact_metrics.bonded_pbcp = 80.0;  // 75 % is now too little
+  EXPECT_FALSE(impact_measures(s, 0).bonded);
+}
+
+TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
+  mpm::State s = six_points();
+  s.bodies[0].initial_velocity = {0.0, 0.0, 0.0};
+  const ImpactMeasures m = impact_measures(s, 0);
+  EXPECT_TRUE(std::isnan(m.cor));
+  EXPECT_FALSE(m.moving);
+  EXPECT_FALSE(m.bonded);
+}
+
+// Eq 4.6 per body: sum D N / n_sp; eq 4.7: the mean of the two bodies.
+TEST(NodalBond, AveragesEachBodyThenThePair) {
+  mpm::ContactNodes c;
+  const std::int32_t slot = c.add(7);
+  const int a = c.entry(slot, 0), b = c.entry(slot, 1);
+  c.bond_sum[mpm::ContactNodes::flat(slot, a)] = 1.2;  // e.g. 2.0 * 0.6
+  c.surface_count[mpm::ContactNodes::flat(slot, a)] = 2;
+  c.bond_sum[mpm::ContactNodes::flat(slot, b)] = 0.9;
+  c.surface_count[mpm::ContactNodes::flat(slot, b)] = 3;
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.5 * (0.6 + 0.3), 1e-15);
+  EXPECT_FALSE(mpm::bond_holds(mpm::nodal_bond(c, slot, a, b)));
+  c.bond_sum[mpm::ContactNodes::flat(slot, a)] = 3.4;  // 1.7 and 0.3: the mean is 1
+  EXPECT_TRUE(mpm::bond_holds(mpm::nodal_bond(c, slot, a, b)));
+  // A body with no surface point at the node contributes 0.
+  c.surface_count[mpm::ContactNodes::flat(slot, b)] = 0;
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.85, 1e-15);
+}
+
+}  // namespace
+}  // namespace coldspray::metrics
