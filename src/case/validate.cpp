@@ -61,6 +61,9 @@ void check_axisymmetric(const Document& doc, const Body& b) {
 
 void check_consistency(const Document& doc, const Case& c) {
   check_contact_body(doc, c);
+  if (c.solver.geometry == Geometry::ThreeD && c.grid.min && c.grid.max &&
+      (*c.grid.min)[1] >= (*c.grid.max)[1])
+    fail(doc, {"grid", "max"}, "must be greater than min in y in 3D geometry");
   for (const Body& b : c.bodies) {
     check_spacing(doc, c, b);
     if (c.solver.geometry == Geometry::Axisymmetric) check_axisymmetric(doc, b);
