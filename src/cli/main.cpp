@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   cli::add_check(app);
   cli::add_materials(app);
   cli::add_material_test(app);
+  cli::add_sweep(app);
 
   try {
     app.parse(argc, argv);
