@@ -76,31 +76,45 @@ std::string Document::where(const YAML::Node& key, const YAML::Node& value) cons
   return key.Mark().is_null() ? where(value) : where(key);
 }
 
-std::string Document::where(std::span<const std::string> path) const {
-  std::optional<YAML::Node> key;  // none for the root and for list items
-  YAML::Node node = root_;
+Document::Located Document::locate(std::span<const std::string> path) const {
+  Located at{std::nullopt, root_};
   for (const std::string& segment : path) {
-    const YAML::Node parent = node;
+    const YAML::Node parent = at.node;
     bool found = false;
     if (parent.IsMap()) {
       for (const auto& entry : parent) {
         if (entry.first.IsScalar() && entry.first.Scalar() == segment) {
-          key.emplace(entry.first);
-          node.reset(entry.second);
+          at.key.emplace(entry.first);
+          at.node.reset(entry.second);
           found = true;
         }
       }
     } else if (parent.IsSequence()) {
       if (const auto index = find_item(parent, segment)) {
-        key.reset();
-        node.reset(parent[*index]);
+        at.key.reset();
+        at.node.reset(parent[*index]);
         found = true;
       }
     }
-    if (!found) break;
+    if (!found) {
+      at.found = false;
+      break;
+    }
   }
-  if (node.IsNull() && key) return where(*key, node);
-  return where(node);
+  return at;
+}
+
+std::string Document::where(std::span<const std::string> path) const {
+  const Located at = locate(path);
+  if (at.node.IsNull() && at.key) return where(*at.key, at.node);
+  return where(at.node);
+}
+
+bool Document::mark_origin(std::span<const std::string> path, std::string origin) {
+  const Located at = locate(path);
+  if (!at.found) return false;
+  mark_origin(at.node, std::move(origin));
+  return true;
 }
 
 std::optional<std::size_t> find_item(const YAML::Node& list, std::string_view selector) {

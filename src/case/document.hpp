@@ -26,6 +26,9 @@ class Document {
 
   // Records that `node` and everything under it came from `origin` (e.g. "--set solver.cfl").
   void mark_origin(const YAML::Node& node, std::string origin);
+  // The same for the node at a key path (list items selected by name or index); false, marking
+  // nothing, when there is no node there.
+  bool mark_origin(std::span<const std::string> path, std::string origin);
 
   // "FILE:LINE:COLUMN" of a node (1-based), its origin if marked, or FILE for a node with no
   // position.
@@ -39,6 +42,15 @@ class Document {
  private:
   Document(std::string name, YAML::Node root) : name_(std::move(name)), root_(std::move(root)) {}
   std::optional<std::string> origin(const YAML::Node& node) const;
+
+  // The node at a key path, or its deepest existing ancestor (found = false), with the map key
+  // that names it (none for the root and for list items).
+  struct Located {
+    std::optional<YAML::Node> key;
+    YAML::Node node;
+    bool found = true;
+  };
+  Located locate(std::span<const std::string> path) const;
 
   std::string name_;
   YAML::Node root_;

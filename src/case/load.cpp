@@ -2,7 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <ostream>
+#include <stdexcept>
 
 #include "case/case_materials.hpp"
 #include "case/case_schema.hpp"
@@ -14,15 +16,55 @@
 
 namespace coldspray::case_file {
 
-Case load_case(const std::string& path, const std::vector<Override>& overrides) {
-  Document doc = Document::from_file(path);
+namespace {
+
+Case read_case(Document& doc, const std::vector<Override>& overrides) {
   for (const Override& o : overrides) apply_override(doc, o);
   Case c;
   Reader::read(doc, doc.root(), "", c);
-  c.source_file = path;
+  c.source_file = doc.name();
   resolve_body_materials(doc, c);
   check_consistency(doc, c);
   return c;
+}
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> segments;
+  std::size_t start = 0;
+  while (start <= key.size() && !key.empty()) {
+    const std::size_t dot = std::min(key.find('.', start), key.size());
+    segments.push_back(key.substr(start, dot - start));
+    start = dot + 1;
+  }
+  return segments;
+}
+
+}  // namespace
+
+Case load_case(const std::string& path, const std::vector<Override>& overrides) {
+  Document doc = Document::from_file(path);
+  return read_case(doc, overrides);
+}
+
+Case load_case_text(const std::string& name, std::string_view text,
+                    const std::vector<ValueOrigin>& origins,
+                    const std::vector<Override>& overrides) {
+  Document doc = Document::from_text(name, text);
+  for (const ValueOrigin& o : origins) {
+    // A generator that names a key it did not write is a bug, not bad input.
+    if (!doc.mark_origin(split_key(o.key), o.origin))
+      throw std::logic_error("load_case_text: no key '" + o.key + "' in " + name);
+  }
+  return read_case(doc, overrides);
+}
+
+std::string apply_overrides(const std::string& name, std::string_view text,
+                            const std::vector<Override>& overrides) {
+  Document doc = Document::from_text(name, text);
+  for (const Override& o : overrides) apply_override(doc, o);
+  YAML::Emitter emitter;
+  emitter << doc.root();
+  return std::string(emitter.c_str()) + "\n";
 }
 
 void write_resolved(const Case& c, std::ostream& out) {

@@ -24,6 +24,24 @@ Override parse_override(std::string_view text);
 // Reads, overrides, parses and validates a case file. Throws InputError on any problem.
 Case load_case(const std::string& path, const std::vector<Override>& overrides = {});
 
+// Where a value of a generated case came from: problems with the value at `key` (a dotted path
+// as in --set, list items by name or index) are reported at `origin` (e.g. "--diameter")
+// rather than at a line of text the user did not write.
+struct ValueOrigin {
+  std::string key;
+  std::string origin;
+};
+
+// load_case for a case given as YAML text (`coldspray impact` generates one): the same reading,
+// overrides and checks. `name` stands for the file in messages and is the case's source_file.
+Case load_case_text(const std::string& name, std::string_view text,
+                    const std::vector<ValueOrigin>& origins = {},
+                    const std::vector<Override>& overrides = {});
+
+// YAML text with the overrides applied, re-emitted (comments are lost); InputError as load_case.
+std::string apply_overrides(const std::string& name, std::string_view text,
+                            const std::vector<Override>& overrides);
+
 // The fully resolved case (defaults filled in, SI numbers, materials expanded), as YAML that
 // load_case reads back to an equal Case.
 void write_resolved(const Case& c, std::ostream& out);

@@ -7,6 +7,7 @@
 #include "case/load.hpp"
 #include "cli/case_summary.hpp"
 #include "cli/commands.hpp"
+#include "cli/run_report.hpp"
 
 namespace coldspray::cli {
 
@@ -20,9 +21,7 @@ void add_check(CLI::App& app) {
   sub->add_option("case", opt->case_path, "Case file (YAML)")->required();
   sub->add_option("--set", opt->sets, "Override a key: KEY=VALUE (repeatable)");
   sub->callback([opt] {
-    std::vector<case_file::Override> overrides;
-    for (const auto& s : opt->sets) overrides.push_back(case_file::parse_override(s));
-    const case_file::Case c = case_file::load_case(opt->case_path, overrides);
+    const case_file::Case c = case_file::load_case(opt->case_path, parse_overrides(opt->sets));
     print_case_summary(c, std::cout);
     std::cout << fmt::format("{}: OK\n", opt->case_path);
   });

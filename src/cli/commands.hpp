@@ -11,5 +11,6 @@ void add_check(CLI::App& app);
 void add_materials(CLI::App& app);
 void add_material_test(CLI::App& app);
 void add_sweep(CLI::App& app);
+void add_impact(CLI::App& app);
 
 }  // namespace coldspray::cli

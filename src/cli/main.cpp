@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("coldspray ") + COLDSPRAY_VERSION);
   app.require_subcommand(1);
   cli::add_run(app);
+  cli::add_impact(app);
   cli::add_check(app);
   cli::add_materials(app);
   cli::add_material_test(app);

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "case/load.hpp"
 #include "case_test_support.hpp"
 
@@ -166,6 +169,58 @@ TEST(LoadCase, AttributesSourcesOfGroupsACaseSets) {
 TEST(LoadCase, AcceptsAnAxisymmetricCaseOnTheAxis) {
   const Case c = load_case(case_path("axisymmetric.yaml"));
   EXPECT_EQ(c.solver.geometry, Geometry::Axisymmetric);
+}
+
+// A generated case (coldspray impact): read like a file, with errors at the value's origin.
+constexpr const char* kGenerated = R"(name: generated
+bodies:
+  - name: particle
+    material: al-ptw
+    shape: {type: sphere, center: [0, 0, 7 um], radius: 7 um}
+    spacing: 0.175 um
+grid:
+  cell_size: 0.7 um
+solver:
+  end_time: 80 ns
+)";
+
+TEST(LoadCaseText, ReadsLikeAFile) {
+  const Case c = load_case_text("generator", kGenerated);
+  EXPECT_EQ(c.name, "generated");
+  EXPECT_EQ(c.source_file, "generator");
+  EXPECT_EQ(c.bodies.at(0).spacing, 0.175e-6);
+  EXPECT_EQ(c.solver.cfl, 0.3);
+}
+
+TEST(LoadCaseText, ReportsAValueAtItsOrigin) {
+  const std::vector<ValueOrigin> origins = {{"bodies.particle.material", "--material"},
+                                            {"solver.end_time", "--end-time"}};
+  std::string text = kGenerated;
+  text.replace(text.find("al-ptw"), 6, "al-ptq");
+  const InputError e = testing::input_error([&] { load_case_text("generator", text, origins); });
+  EXPECT_EQ(e.where(), "--material");
+  EXPECT_EQ(e.key(), "bodies.particle.material");
+  // Without an origin a value is located in the text under the given name.
+  const InputError unmarked = testing::input_error([&] { load_case_text("generator", text); });
+  EXPECT_EQ(unmarked.where(), "generator:4:15");
+}
+
+TEST(LoadCaseText, OverridesWinAndNameThemselves) {
+  const std::vector<ValueOrigin> origins = {{"solver.end_time", "--end-time"}};
+  const InputError e = testing::input_error([&] {
+    load_case_text("generator", kGenerated, origins, {parse_override("solver.end_time=-1 ns")});
+  });
+  EXPECT_EQ(e.where(), "--set solver.end_time");
+  EXPECT_EQ(
+      load_case_text("generator", kGenerated, origins, {parse_override("solver.end_time=5 ns")})
+          .solver.end_time,
+      5e-9);
+}
+
+TEST(LoadCaseText, ApplyOverridesEmitsTheEditedTree) {
+  const std::string text =
+      apply_overrides("generator", kGenerated, {parse_override("solver.cfl=0.2")});
+  EXPECT_EQ(load_case_text("re-read", text).solver.cfl, 0.2);
 }
 
 }  // namespace

@@ -1,0 +1,211 @@
+#include "cli/impact_case.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <iterator>
+#include <string_view>
+
+#include "mpm/setup.hpp"
+
+namespace coldspray::cli {
+
+namespace {
+
+constexpr double kUm = 1e-6;
+
+// Thesis Table 5.3: particle diameter -> substrate cylinder diameter, um (all 10 um high).
+constexpr std::array<std::array<double, 2>, 5> kTable53{
+    {{14.0, 30.0}, {18.0, 36.0}, {22.0, 44.0}, {26.0, 46.0}, {30.0, 50.0}}};
+constexpr double kTableHeightUm = 10.0;
+
+// Up to the next 0.1 um, so that generated sizes print as short decimals; the small tolerance
+// keeps sizes that already are on a 0.1 um step (30 um) where they are.
+double round_up_um(double um) { return std::ceil(um * 10.0 - 1e-6) / 10.0; }
+
+double table_diameter_um(double d) {
+  const auto& first = kTable53.front();
+  const auto& last = kTable53.back();
+  if (d <= first[0]) return first[1] / first[0] * d;
+  if (d > last[0]) return 2.0 * d;
+  const auto upper =
+      std::find_if(kTable53.begin(), kTable53.end(), [d](const auto& row) { return row[0] >= d; });
+  const auto& hi = *upper;
+  const auto& lo = *std::prev(upper);
+  return lo[1] + (hi[1] - lo[1]) * (d - lo[0]) / (hi[0] - lo[0]);
+}
+
+// A length in um, as short as reads back to (nearly) the same double: 12 significant digits
+// drop the noise of unit conversion (0.7e-6 * 1e6 = 0.7000000000000001) that a user never typed.
+std::string um(double metres) { return fmt::format("{:.12g} um", metres / kUm); }
+std::string number(double x) { return fmt::format("{:.12g}", x); }
+// "14", "22.5": the diameter and speed in the case's name.
+std::string short_number(double x) { return fmt::format("{:.6g}", x); }
+
+// Keeps letters, digits, '.', '-' and '_' so the name is a folder name (case_schema.hpp).
+std::string folder_safe(std::string text) {
+  for (char& ch : text)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '_')
+      ch = '_';
+  return text;
+}
+
+// The grid of a 3D quarter model: from the symmetry planes x = 0 and y = 0 to the bodies'
+// bounds plus the margin the solver adds when it places the grid itself (mpm/setup.hpp), on
+// multiples of the cell size.
+struct QuarterGrid {
+  case_file::Vec3 min, max;
+};
+QuarterGrid quarter_grid(double particle_diameter, const SubstrateSize& substrate, double cell) {
+  const case_file::Vec3 lo(0.0, 0.0, -substrate.height);
+  const case_file::Vec3 hi(0.5 * substrate.diameter, 0.5 * substrate.diameter, particle_diameter);
+  QuarterGrid g;
+  for (int d = 0; d < 3; ++d) {
+    const double margin =
+        std::max(mpm::kGridMarginFraction * (hi[d] - lo[d]), mpm::kGridMarginMinCells * cell);
+    // The tolerance keeps a bound that is a whole number of cells (26 um) from gaining one to
+    // rounding (2.6e-5 / 1e-6 = 26.000000000000004), as the solver's own placement does.
+    g.min[d] = d < 2 ? 0.0 : std::floor((lo[d] - margin) / cell + 1e-9) * cell;
+    g.max[d] = std::ceil((hi[d] + margin) / cell - 1e-9) * cell;
+  }
+  return g;
+}
+
+std::string vector_um(const case_file::Vec3& v) {
+  return fmt::format("[{}, {}, {}]", um(v[0]), um(v[1]), um(v[2]));
+}
+
+}  // namespace
+
+SubstrateSize substrate_size(double particle_diameter) {
+  // To the picometre: "30um" is 30.000000000000004 um after the division, which must still be
+  // the table's 30 um rather than a size beyond it.
+  const double d = std::round(particle_diameter / kUm * 1e6) / 1e6;
+  return {round_up_um(table_diameter_um(d)) * kUm,
+          round_up_um(std::max(kTableHeightUm, d / 3.0)) * kUm};
+}
+
+GeneratedCase impact_case(const ImpactSpec& spec) {
+  const std::string substrate_material =
+      spec.substrate_material.empty() ? spec.material : spec.substrate_material;
+  const bool axisymmetric = spec.geometry == case_file::Geometry::Axisymmetric;
+  const bool quarter = !axisymmetric && spec.symmetry == Symmetry::Quarter;
+  const SubstrateSize substrate = substrate_size(spec.diameter);
+  const double radius = 0.5 * spec.diameter;
+  const std::string geometry_text =
+      axisymmetric ? "axisymmetric" : (quarter ? "3d (one quarter)" : "3d (whole)");
+
+  GeneratedCase g;
+  g.name = folder_safe(
+      fmt::format("impact-{}{}-{}um-{}{}", spec.material,
+                  substrate_material == spec.material ? "" : "-on-" + substrate_material,
+                  short_number(spec.diameter / kUm), short_number(spec.speed),
+                  axisymmetric ? "" : (quarter ? "-3d" : "-3d-whole")));
+
+  std::string y;
+  auto line = [&y](const std::string& text) { y += text + "\n"; };
+  // A comment paragraph, wrapped at word boundaries to the repository's 100 columns.
+  auto comment = [&y](std::string_view text) {
+    std::size_t row = 1;  // the width of the row being written, "#" included
+    y += '#';
+    while (!text.empty()) {
+      const std::size_t end = std::min(text.find(' '), text.size());
+      if (row > 1 && row + 1 + end > 99) {
+        y += "\n#";
+        row = 1;
+      }
+      y += ' ';
+      y.append(text.substr(0, end));
+      row += 1 + end;
+      text.remove_prefix(std::min(end + 1, text.size()));
+    }
+    y += '\n';
+  };
+  line("# Generated by: " + spec.command);  // one line, to copy and paste
+  comment(fmt::format(
+      "A {} um particle of {} hits a substrate of {} at {} m/s, starting at first contact "
+      "(thesis §5.2.1): its bottom touches the substrate's top face z = 0 at t = 0. The "
+      "substrate cylinder, {} across and {} high, follows thesis Table 5.3 (the rule: "
+      "docs/impact.md).",
+      short_number(spec.diameter / kUm), spec.material, substrate_material,
+      short_number(spec.speed), um(substrate.diameter), um(substrate.height)));
+  if (quarter)
+    comment(
+        "One quarter is modelled: the planes x = 0 and y = 0 are symmetry planes (roller faces "
+        "of the grid), where the solver cuts the bodies.");
+  line("name: " + g.name);
+  line(fmt::format("description: {} {} um sphere at {} m/s on a {} x {} {} cylinder, {}",
+                   spec.material, short_number(spec.diameter / kUm), short_number(spec.speed),
+                   um(substrate.diameter), um(substrate.height), substrate_material,
+                   geometry_text));
+  line("bodies:");
+  line("  - name: particle");
+  line("    material: " + spec.material);
+  line(fmt::format("    shape: {{type: sphere, center: [0, 0, {}], radius: {}}}", um(radius),
+                   um(radius)));
+  line("    spacing: " + um(spec.spacing));
+  line(fmt::format("    velocity: [0, 0, -{} m/s]", number(spec.speed)));
+  line("    temperature: 298 K");
+  line("  - name: substrate");
+  line("    material: " + substrate_material);
+  line(
+      fmt::format("    shape: {{type: cylinder, base_center: [0, 0, -{}], radius: {}, height: {}}}",
+                  um(substrate.height), um(0.5 * substrate.diameter), um(substrate.height)));
+  line("    spacing: " + um(spec.spacing));
+  line("    temperature: 298 K");
+  line("    absorbing: [bottom, side]   # a semi-infinite substrate (thesis §3.5.5)");
+  line("grid:");
+  line("  cell_size: " + um(spec.cell_size));
+  if (quarter) {
+    const QuarterGrid q = quarter_grid(spec.diameter, substrate, spec.cell_size);
+    line("  min: " + vector_um(q.min));
+    line("  max: " + vector_um(q.max));
+    line("  faces: {xmin: roller, ymin: roller}   # the symmetry planes");
+  }
+  line("solver:");
+  line(std::string("  geometry: ") + (axisymmetric ? "axisymmetric" : "3d"));
+  line("  shape_function: " + spec.shape_function);
+  line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));
+  line("contact:");
+  line("  normal: body:substrate   # the thesis' choice in all its tests (§3.5.4)");
+  line("bonding:");
+  line("  model: " + spec.bonding);
+  g.origins = {{"bodies.particle.material", "--material"},
+               {"bodies.substrate.material",
+                spec.substrate_material.empty() ? "--material" : "--substrate-material"},
+               {"bodies.particle.shape", "--diameter"},
+               {"bodies.substrate.shape", "--diameter"},
+               {"bodies.particle.velocity", "--velocity"},
+               {"bodies.particle.spacing", "--grid"},
+               {"bodies.substrate.spacing", "--grid"},
+               {"grid.cell_size", "--grid"},
+               {"solver.geometry", "--geometry"},
+               {"solver.shape_function", "--shape-function"},
+               {"solver.end_time", "--end-time"},
+               {"bonding.model", "--bonding"}};
+  // Parameters not given keep the schema's defaults (the thesis' calibration, §5.1.4), so a
+  // new calibration in the schema reaches generated cases too.
+  auto parameter = [&](const char* key, const char* option, const std::string& text) {
+    line(fmt::format("  {}: {}", key, text));
+    g.origins.push_back({fmt::format("bonding.{}", key), option});
+  };
+  if (spec.critical_energy)
+    parameter("critical_energy", "--Gc", number(*spec.critical_energy) + " J/m^2");
+  if (spec.critical_energy_rate)
+    parameter("critical_energy_rate", "--Gc-rate",
+              number(*spec.critical_energy_rate * 1e-6) + " J/m^2/us");
+  if (spec.critical_strain) parameter("critical_strain", "--eps-c", number(*spec.critical_strain));
+  if (spec.critical_strain_rate)
+    parameter("critical_strain_rate", "--eps-c-rate", number(*spec.critical_strain_rate) + " 1/s");
+  if (spec.floor) parameter("floor", "--floor", number(*spec.floor));
+  line("output:");
+  line("  history_interval: 0.5 ns");
+  line("  snapshot_interval: 10 ns");
+  g.yaml = std::move(y);
+  return g;
+}
+
+}  // namespace coldspray::cli

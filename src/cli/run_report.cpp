@@ -1,0 +1,55 @@
+#include "cli/run_report.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <ostream>
+
+#include "cli/case_summary.hpp"
+#include "run/run.hpp"
+
+namespace coldspray::cli {
+
+void add_run_flags(CLI::App& sub, RunFlags& flags) {
+  sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)");
+  sub.add_option("--set", flags.sets, "Override a key: KEY=VALUE (repeatable)");
+  sub.add_option("--threads", flags.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  sub.add_flag("--quiet", flags.quiet, "No progress line");
+}
+
+std::vector<case_file::Override> parse_overrides(const std::vector<std::string>& sets) {
+  std::vector<case_file::Override> overrides;
+  for (const auto& s : sets) overrides.push_back(case_file::parse_override(s));
+  return overrides;
+}
+
+Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostream& out) {
+  if (flags.threads > 0) omp_set_num_threads(flags.threads);
+  print_case_summary(c, out);
+  run::RunOptions options;
+  options.out_dir = flags.out_dir.empty() ? "out/" + c.name : flags.out_dir;
+  options.progress = !flags.quiet;
+  const run::Summary s = run::run_case(c, options);
+  out << fmt::format(
+      "done: {} steps to t = {:.4g} ns in {:.1f} s on {} threads ({:.3g} particle-steps/s)\n"
+      "energy: kinetic {:.4g} J, elastic {:.4g} J, plastic work {:.4g} J, viscous {:.4g} J, "
+      "absorbed {:.4g} J, contact {:.4g} J; budget error {:.2e}\n",
+      s.steps, s.time * 1e9, s.wall_seconds, s.threads, s.particle_steps_per_second,
+      s.energy.kinetic, s.energy.elastic(), s.energy.plastic_work, s.energy.viscous,
+      s.energy.absorbed, s.energy.contact, s.energy_relative_error());
+  for (const auto& b : s.bodies)
+    out << fmt::format(
+        "  {}: velocity ({:.4g}, {:.4g}, {:.4g}) m/s, max eqps {:.3g}, mean eqps {:.3g}, "
+        "max T {:.0f} K\n",
+        b.name, b.velocity[0], b.velocity[1], b.velocity[2], b.max_eqps, b.mean_eqps,
+        b.max_temperature);
+  return {s, options.out_dir};
+}
+
+void print_results_location(const std::filesystem::path& out_dir, std::ostream& out) {
+  out << fmt::format("results in {}/ (summary.json, history.csv; ParaView: {}/snapshots.pvd)\n",
+                     out_dir.string(), out_dir.string());
+}
+
+}  // namespace coldspray::cli

@@ -1,0 +1,42 @@
+// What `run` and `impact` share: the options that say where and how a case runs, and running a
+// validated case with its summary printed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "case/case.hpp"
+#include "case/load.hpp"
+#include "run/summary.hpp"
+
+namespace coldspray::cli {
+
+struct RunFlags {
+  std::string out_dir;  // default out/NAME
+  std::vector<std::string> sets;
+  int threads = 0;  // 0: all cores
+  bool quiet = false;
+};
+
+// --out, --set, --threads and --quiet on a subcommand; `flags` must outlive the parse.
+void add_run_flags(CLI::App& sub, RunFlags& flags);
+
+// The --set texts as overrides; InputError for one that is not KEY=VALUE.
+std::vector<case_file::Override> parse_overrides(const std::vector<std::string>& sets);
+
+struct Report {
+  run::Summary summary;
+  std::filesystem::path out_dir;
+};
+
+// Prints the case, runs it into flags.out_dir (or out/NAME) and prints the steps, the energy
+// budget and each body's motion; RunFault and InputError pass through.
+Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostream& out);
+
+// "results in DIR/ (...)": the last line of `run` and `impact`.
+void print_results_location(const std::filesystem::path& out_dir, std::ostream& out);
+
+}  // namespace coldspray::cli
