@@ -51,16 +51,19 @@ void update_point(const Models& models, const StepKinematics& k, const UpdateOpt
   // (4) Trial von Mises stress (eq A5).
   const double trial = von_mises(s);
   // (5) Yield check at the rate floor, then the consistent return (eqs A6-A8 with sigma_y solved
-  // in the step). Temperature is explicit: T^n throughout the step.
+  // in the step), started from the last step's rate. Temperature is explicit: T^n throughout
+  // the step.
   const strength::Conditions c{st.temperature, rho, G, models.melt_temperature_at(rho)};
   const auto flow_stress = models.flow_stress_in_step(c);
   double flow = flow_stress(st.eqps, 0.0);
   double d_eqps = 0.0;
+  const double last_rate = st.eqps_rate;
   st.eqps_rate = 0.0;
   if (trial > flow) {
     const double eqps = st.eqps;
-    const PlasticIncrement inc = solve_plastic_increment(
-        trial, 3.0 * G, flow, [&](double x) { return flow_stress(eqps + x, x / k.dt); });
+    const PlasticIncrement inc =
+        solve_plastic_increment(trial, 3.0 * G, flow, last_rate * k.dt,
+                                [&](double x) { return flow_stress(eqps + x, x / k.dt); });
     d_eqps = inc.eqps_increment;
     flow = inc.flow_stress;
     st.eqps_rate = d_eqps / k.dt;
