@@ -41,6 +41,11 @@ class ContactNodes {
   std::array<std::vector<double>, 3> mass_gradient;
   // The momentum the contact step added (eq 3.31 times dt), for the contact work on the points.
   std::array<std::vector<double>, 3> correction;
+  // As GridFields::velocity and velocity_change, and the part of the latter contact made,
+  // correction/m.
+  std::array<std::vector<double>, 3> velocity;
+  std::array<std::vector<double>, 3> velocity_change;
+  std::array<std::vector<double>, 3> contact_velocity_change;
 
  private:
   void grow(std::size_t slots);

@@ -6,7 +6,7 @@ namespace coldspray::mpm {
 
 void GridFields::resize(std::size_t n) {
   mass.resize(n);
-  for (auto* a : {&momentum, &force})
+  for (auto* a : {&momentum, &force, &velocity, &velocity_change})
     for (auto& v : *a) v.resize(n);
   first_body.resize(n);
   shared.resize(n);
