@@ -77,10 +77,12 @@ void map_points_to_grid(State& s) {
         g.momentum[d][n] += w * c.mv[d];
         g.force[d][n] += f[d];
       }
-      if (g.first_body[n] < 0)
-        g.first_body[n] = b;
-      else if (g.first_body[n] != b)
-        g.shared[n] = 1;
+      // (One word per node: a byte-wide flag here would alias every array of the loop.)
+      const std::int32_t seen = g.reached_by[n];
+      if (seen == GridFields::kNoBody)
+        g.reached_by[n] = b;
+      else if (seen != b)
+        g.reached_by[n] = GridFields::kManyBodies;
     });
   });
 }

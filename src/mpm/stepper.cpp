@@ -46,7 +46,7 @@ void find_contact_nodes(State& s) {
   const GridLayout& L = s.layout;
   const int reach_y = L.axisymmetric ? 0 : 1;
   for (std::size_t n = 0; n < L.node_count(); ++n) {
-    if (!s.grid.shared[n]) continue;
+    if (s.grid.reached_by[n] != GridFields::kManyBodies) continue;
     s.grid.contact_slot[n] = s.contact.add(n);
     const int i = static_cast<int>(n % L.nodes[0]);
     const int j = static_cast<int>((n / L.nodes[0]) % L.nodes[1]);
