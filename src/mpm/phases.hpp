@@ -46,7 +46,8 @@ struct PointContribution {
   }
 
   void force(double w, double gx, double gy, double gz, double f[3]) const {
-    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz) - w * hoop;
+    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz);
+    if constexpr (Axisymmetric) f[0] -= w * hoop;
     f[1] = w * fext[1] - (Vs[kXY] * gx + Vs[kYY] * gy + Vs[kYZ] * gz);
     f[2] = w * fext[2] - (Vs[kXZ] * gx + Vs[kYZ] * gy + Vs[kZZ] * gz);
   }
