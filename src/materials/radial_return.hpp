@@ -8,6 +8,13 @@
 // exact in one step for linear hardening and superlinear for smooth flow stresses (PTW and
 // Johnson-Cook from 1e3 to 1e9 1/s: 6-13 evaluations to 1e-12); a bisection step after four
 // iterations that fail to halve the bracket bounds the work for anything rougher.
+// A point that flowed in the last step usually flows at a similar rate in this one: given that
+// step's increment as a guess x0, secant steps from x0 (each evaluation also narrowing the
+// bracket) reach the same tolerance in 5.1 evaluations in all instead of 9.6 (al-ptw, 3D impact
+// benchmark). Any f(x) > 0 on the way shows that the point yields (f decreases), so the yield
+// check is evaluated only if none does; f(x0) > 0 also brackets the root by
+// [x0, x0 + f(x0)/(3G)]. A secant step that leaves the bracket hands over to the regula falsi on
+// what is left of it.
 #pragma once
 
 #include <cmath>
@@ -28,33 +35,111 @@ struct PlasticIncrement {
   int evaluations = 0;          // of the flow stress
 };
 
-// `trial` is the trial von Mises stress, `three_G` = 3G > 0, `flow_at_zero` = sigma_y(0) <
-// trial (the yield check's value), `flow(x)` the flow stress at the increment x.
+// Offset of the second secant point from the guess, relative: small enough that the first
+// secant step is nearly a Newton step from the guess, large enough that the secant slope is
+// not rounding noise.
+inline constexpr double kSecantOffset = 0.02;
+// Secant evaluations before the bracketed solve takes over.
+inline constexpr int kSecantMaxEvaluations = 8;
+
+// The return of a point with trial von Mises stress `trial` > 0 and `three_G` = 3G > 0, where
+// `flow(x)` is the flow stress at the increment x (flow(0): at eqps^n and the rate floor) and
+// `guess` an estimate of x (0 for none). Returns x = 0 and flow(0) where the point does not
+// yield (f(0) <= 0), else the root of f; `evaluations` counts the yield check too.
 template <class Flow>
-PlasticIncrement solve_plastic_increment(double trial, double three_G, double flow_at_zero,
-                                         Flow&& flow) {
-  double a = 0.0;
-  double fa = trial - flow_at_zero;
-  double b = fa / three_G;
-  const double flow_b = flow(b);
-  double fb = flow_at_zero - flow_b;
-  PlasticIncrement best{b, flow_b, 1};
-  double best_residual = std::abs(fb);
+PlasticIncrement consistent_return(double trial, double three_G, double guess, Flow&& flow) {
+  const double tolerance = kReturnTolerance * trial;
+  PlasticIncrement best;
+  double best_residual = 0.0;
+  // Counts an evaluation f(x) = fx at x > 0, with flow_x = sigma_y(x), and keeps the best.
+  auto record = [&](double x, double flow_x, double fx) {
+    ++best.evaluations;
+    if (best.eqps_increment == 0.0 || std::abs(fx) < best_residual) {
+      best = {x, flow_x, best.evaluations};
+      best_residual = std::abs(fx);
+    }
+  };
+  // The bracket: f(a) > 0 >= f(b). Its upper end is first placed at b = x + f(x)/(3G) from a
+  // point x that yields, where f(b) = sigma_y(x) - sigma_y(b) <= 0 before it is evaluated.
+  double a = 0.0, fa = 0.0, b = 0.0, fb = 0.0;
+  double flow_below_b = 0.0;  // sigma_y(x) of the point b was placed from
+  bool fb_known = false;
+  bool yields = false;  // some f(x) > 0 seen: then f(0) > 0 too, f decreases
+  auto narrow = [&](double x, double fx) {
+    if (fx > 0.0) {
+      a = x;
+      fa = fx;
+      yields = true;
+    } else {
+      b = x;
+      fb = fx;
+      fb_known = true;
+    }
+  };
+  // The yield check, f(0) > 0 (at eqps^n and the rate floor); its f(0) and sigma_y(0) are the
+  // bracket's lower end and the base of b = x_max.
+  auto yields_at_rest = [&] {
+    const double flow_0 = flow(0.0);
+    ++best.evaluations;
+    fa = trial - flow_0;
+    flow_below_b = flow_0;
+    yields = fa > 0.0;
+    if (!yields) best = {0.0, flow_0, best.evaluations};
+    return yields;
+  };
+
+  const bool warm = guess > 0.0 && guess < trial / three_G;
+  double x0 = guess, f0 = 0.0;
+  if (warm) {
+    const double flow_0 = flow(x0);
+    f0 = trial - three_G * x0 - flow_0;
+    record(x0, flow_0, f0);
+    narrow(x0, f0);
+    if (f0 > 0.0) {
+      b = x0 + f0 / three_G;
+      flow_below_b = flow_0;
+    }
+  } else {
+    if (!yields_at_rest()) return best;
+    b = fa / three_G;  // x_max
+  }
+
+  // Secant steps from the guess, each evaluation narrowing the bracket.
+  if (warm) {
+    // The second point on the side of the root.
+    double x1 = x0 * (f0 > 0.0 ? 1.0 + kSecantOffset : 1.0 - kSecantOffset);
+    while (best_residual > tolerance && best.evaluations < kSecantMaxEvaluations && x1 > a &&
+           x1 < b) {
+      const double flow_1 = flow(x1);
+      const double f1 = trial - three_G * x1 - flow_1;
+      record(x1, flow_1, f1);
+      narrow(x1, f1);
+      const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+      x0 = x1;
+      f0 = f1;
+      x1 = x2;
+    }
+    // No step showed that the point yields: the yield check decides (a = 0 gets its f).
+    if (!yields && !yields_at_rest()) return best;
+  }
+  if (!fb_known && (best.eqps_increment == 0.0 || best_residual > tolerance)) {
+    const double flow_b = flow(b);
+    fb = flow_below_b - flow_b;
+    record(b, flow_b, fb);
+  }
+
+  // Anderson-Bjorck regula falsi on [a, b].
   int side = 0;          // which end the last step moved: -1 a, +1 b, 0 after a bisection
   int stalled = 0;       // iterations since the bracket last halved
   double width = b - a;  // bracket width when it last halved
-  while (best.evaluations < kReturnMaxEvaluations && best_residual > kReturnTolerance * trial) {
+  while (best.evaluations < kReturnMaxEvaluations && best_residual > tolerance) {
     const bool bisect = stalled >= 4;
     double x = bisect ? 0.5 * (a + b) : (a * fb - b * fa) / (fb - fa);
     if (!(x > a && x < b)) x = 0.5 * (a + b);  // regula falsi rounded onto an end
     if (!(x > a && x < b)) break;              // the bracket is two adjacent doubles
     const double flow_x = flow(x);
     const double fx = trial - three_G * x - flow_x;
-    ++best.evaluations;
-    if (std::abs(fx) < best_residual) {
-      best = {x, flow_x, best.evaluations};
-      best_residual = std::abs(fx);
-    }
+    record(x, flow_x, fx);
     // Anderson-Bjorck: when the same end moves twice, scale the other end's value down.
     if (fx > 0.0) {
       if (side == -1) fb *= fx < fa ? 1.0 - fx / fa : 0.5;

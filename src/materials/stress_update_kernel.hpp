@@ -50,20 +50,19 @@ void update_point(const Models& models, const StepKinematics& k, const UpdateOpt
   Matrix3d s = s_rotated + 2.0 * G * (d - d.trace() / 3.0 * I);
   // (4) Trial von Mises stress (eq A5).
   const double trial = von_mises(s);
-  // (5) Yield check at the rate floor, then the consistent return (eqs A6-A8 with sigma_y solved
-  // in the step). Temperature is explicit: T^n throughout the step.
+  // (5) Yield check at the rate floor and the consistent return (eqs A6-A8 with sigma_y solved
+  // in the step), started from the last step's rate. Temperature is explicit: T^n throughout
+  // the step.
   const strength::Conditions c{st.temperature, rho, G, models.melt_temperature_at(rho)};
   const auto flow_stress = models.flow_stress_in_step(c);
-  double flow = flow_stress(st.eqps, 0.0);
-  double d_eqps = 0.0;
-  st.eqps_rate = 0.0;
-  if (trial > flow) {
-    const double eqps = st.eqps;
-    const PlasticIncrement inc = solve_plastic_increment(
-        trial, 3.0 * G, flow, [&](double x) { return flow_stress(eqps + x, x / k.dt); });
-    d_eqps = inc.eqps_increment;
-    flow = inc.flow_stress;
-    st.eqps_rate = d_eqps / k.dt;
+  const double eqps = st.eqps;
+  const PlasticIncrement inc =
+      consistent_return(trial, 3.0 * G, st.eqps_rate * k.dt,
+                        [&](double x) { return flow_stress(eqps + x, x / k.dt); });
+  const double flow = inc.flow_stress;
+  const double d_eqps = inc.eqps_increment;
+  st.eqps_rate = d_eqps / k.dt;
+  if (d_eqps > 0.0) {
     s *= flow / trial;  // eq A8
     // (6) Adiabatic heating (eq 3.44) with the step's final flow stress.
     if (!opt.isothermal)

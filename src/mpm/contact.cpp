@@ -51,7 +51,8 @@ void ContactNodes::grow(std::size_t slots) {
   body_count_.resize(slots);
   body_.resize(slots * kMaxBodiesPerNode);
   mass.resize(slots * kMaxBodiesPerNode);
-  for (auto* a : {&momentum, &force, &mass_gradient, &correction})
+  for (auto* a : {&momentum, &force, &mass_gradient, &correction, &velocity, &velocity_change,
+                  &contact_velocity_change})
     for (auto& v : *a) v.resize(slots * kMaxBodiesPerNode);
   pair_master.resize(slots * kMaxPairsPerNode);
   for (auto& v : pair_normal) v.resize(slots * kMaxPairsPerNode);

@@ -47,6 +47,11 @@ class ContactNodes {
   std::array<std::vector<double>, 3> mass_gradient;
   // The momentum the contact step added (eq 3.31 times dt), for the contact work on the points.
   std::array<std::vector<double>, 3> correction;
+  // As GridFields::velocity and velocity_change, and the part of the latter contact made,
+  // correction/m.
+  std::array<std::vector<double>, 3> velocity;
+  std::array<std::vector<double>, 3> velocity_change;
+  std::array<std::vector<double>, 3> contact_velocity_change;
 
   // Per pair of entries, indexed by pair(slot, e1, e2): the entry whose normal the pair uses
   // (-1: no normal, the pair is skipped), that unit normal, and the surfaces along it: the

@@ -33,14 +33,18 @@ struct GridFields {
   std::vector<double> mass;                     // kg
   std::array<std::vector<double>, 3> momentum;  // kg m/s
   std::array<std::vector<double>, 3> force;     // N
-  // Which bodies reach a node this step: the first one seen, and whether another one did too.
-  std::vector<std::int32_t> first_body;
-  std::vector<std::uint8_t> shared;
+  // Which bodies reach a node this step: none, the one body that does, or two and more.
+  static constexpr std::int32_t kNoBody = -1, kManyBodies = -2;
+  std::vector<std::int32_t> reached_by;
   // Index of the node's slot in the contact storage, or -1 where only one body has mass.
   std::vector<std::int32_t> contact_slot;
+  // Eq 3.32's nodal velocities p/m and the step's velocity change f dt/m, once per phase that
+  // reads them (mpm/phases.hpp: compute_nodal_velocities).
+  std::array<std::vector<double>, 3> velocity;         // m/s
+  std::array<std::vector<double>, 3> velocity_change;  // m/s
 
   void resize(std::size_t n);
-  void clear();  // zero everything for a new step (no allocation)
+  void clear();  // zero the sums for a new step (no allocation); velocities follow from them
 };
 
 }  // namespace coldspray::mpm

@@ -46,7 +46,8 @@ struct PointContribution {
   }
 
   void force(double w, double gx, double gy, double gz, double f[3]) const {
-    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz) - w * hoop;
+    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz);
+    if constexpr (Axisymmetric) f[0] -= w * hoop;
     f[1] = w * fext[1] - (Vs[kXY] * gx + Vs[kYY] * gy + Vs[kYZ] * gz);
     f[2] = w * fext[2] - (Vs[kXZ] * gx + Vs[kYZ] * gy + Vs[kZZ] * gz);
   }
@@ -77,10 +78,12 @@ void map_points_to_grid(State& s) {
         g.momentum[d][n] += w * c.mv[d];
         g.force[d][n] += f[d];
       }
-      if (g.first_body[n] < 0)
-        g.first_body[n] = b;
-      else if (g.first_body[n] != b)
-        g.shared[n] = 1;
+      // (One word per node: a byte-wide flag here would alias every array of the loop.)
+      const std::int32_t seen = g.reached_by[n];
+      if (seen == GridFields::kNoBody)
+        g.reached_by[n] = b;
+      else if (seen != b)
+        g.reached_by[n] = GridFields::kManyBodies;
     });
   });
 }
@@ -205,35 +208,63 @@ void mark_touching_points(State& s) {
   }
 }
 
-// The nodal mass, momentum and force a point of body b sees at node n: its own body's at a
-// contact node, the total elsewhere. Returns false where the node carries no velocity.
+// Eq 3.32's nodal velocities v = p/m and, `with_forces`, the step's velocity change f dt/m and
+// the part of it contact made, correction/m: on the grid and per body at contact nodes, each
+// divided once here rather than at every point that reads it. Nodes lighter than the mass
+// floor carry no velocity: zero.
+inline void compute_nodal_velocities(State& s, bool with_forces) {
+  GridFields& g = s.grid;
+  const long nodes = static_cast<long>(s.layout.node_count());
+  const double dt = s.dt, floor = s.mass_floor;
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nodes; ++n) {
+    const bool moves = g.mass[n] > floor;
+    for (int d = 0; d < 3; ++d) {
+      g.velocity[d][n] = moves ? g.momentum[d][n] / g.mass[n] : 0.0;
+      if (with_forces) g.velocity_change[d][n] = moves ? g.force[d][n] * dt / g.mass[n] : 0.0;
+    }
+  }
+  ContactNodes& c = s.contact;
+  for (std::size_t slot = 0; slot < c.size(); ++slot)
+    for (int e = 0; e < c.body_count(static_cast<std::int32_t>(slot)); ++e) {
+      const std::size_t i = ContactNodes::flat(static_cast<std::int32_t>(slot), e);
+      const bool moves = c.mass[i] > floor;
+      for (int d = 0; d < 3; ++d) {
+        c.velocity[d][i] = moves ? c.momentum[d][i] / c.mass[i] : 0.0;
+        if (!with_forces) continue;
+        c.velocity_change[d][i] = moves ? c.force[d][i] * dt / c.mass[i] : 0.0;
+        c.contact_velocity_change[d][i] = moves ? c.correction[d][i] / c.mass[i] : 0.0;
+      }
+    }
+}
+
+// The nodal velocities a point of body b sees at node n: its own body's at a contact node, the
+// grid's elsewhere.
 struct NodeView {
-  double m;
-  double p[3];
-  double f[3];
-  double contact[3];  // the momentum contact added this step (0 away from contact nodes)
+  double v[3];           // p/m
+  double dv[3];          // f dt/m
+  double dv_contact[3];  // correction/m (0 away from contact nodes)
 };
 
-inline bool node_view(const State& s, std::size_t n, int b, NodeView& v) {
+inline NodeView node_view(const State& s, std::size_t n, int b) {
+  NodeView v;
   const std::int32_t slot = s.grid.contact_slot[n];
   const int e = slot < 0 ? -1 : s.contact.find(slot, b);
   if (e < 0) {
-    v.m = s.grid.mass[n];
     for (int d = 0; d < 3; ++d) {
-      v.p[d] = s.grid.momentum[d][n];
-      v.f[d] = s.grid.force[d][n];
-      v.contact[d] = 0.0;
+      v.v[d] = s.grid.velocity[d][n];
+      v.dv[d] = s.grid.velocity_change[d][n];
+      v.dv_contact[d] = 0.0;
     }
   } else {
     const std::size_t i = ContactNodes::flat(slot, e);
-    v.m = s.contact.mass[i];
     for (int d = 0; d < 3; ++d) {
-      v.p[d] = s.contact.momentum[d][i];
-      v.f[d] = s.contact.force[d][i];
-      v.contact[d] = s.contact.correction[d][i];
+      v.v[d] = s.contact.velocity[d][i];
+      v.dv[d] = s.contact.velocity_change[d][i];
+      v.dv_contact[d] = s.contact.contact_velocity_change[d][i];
     }
   }
-  return v.m > s.mass_floor;
+  return v;
 }
 
 // Step 7 (eq 3.32): point velocities from the nodal forces; the displacement from the nodal
@@ -250,20 +281,19 @@ void update_point_velocities(State& s) {
     const auto p = static_cast<std::size_t>(pi);
     const auto st = stencil_at<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
-    double dv[3] = {0, 0, 0}, dx[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};
+    double dv[3] = {0, 0, 0}, v[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
-      NodeView v;
-      if (!node_view(s, n, b, v)) return;
+      const NodeView node = node_view(s, n, b);
       for (int d = 0; d < 3; ++d) {
-        dv[d] += w * v.f[d] / v.m * dt;
-        dx[d] += w * v.p[d] / v.m * dt;
-        dv_contact[d] += w * v.contact[d] / v.m;
+        dv[d] += w * node.dv[d];
+        v[d] += w * node.v[d];
+        dv_contact[d] += w * node.dv_contact[d];
       }
     });
     for (int d = 0; d < 3; ++d) {
       P.contact_work[p] += P.mass[p] * (P.velocity[d][p] + 0.5 * dv[d]) * dv_contact[d];
       P.velocity[d][p] += dv[d];
-      P.displacement[d][p] = dx[d];
+      P.displacement[d][p] = v[d] * dt;
     }
   }
 }

@@ -8,12 +8,13 @@
 
 namespace coldspray::mpm {
 
-// Weights of the nodes base, base+1, ... along one axis, and their derivatives d/dx.
+// Weights of the nodes base, base+1, ... along one axis, and their derivatives d/dx. Left
+// uninitialised: every evaluate() sets all of them, once per point and phase.
 template <int Support>
 struct Weights1D {
-  int base = 0;
-  double w[Support] = {};
-  double dw[Support] = {};
+  int base;
+  double w[Support];
+  double dw[Support];
 };
 
 struct LinearShape {

@@ -47,7 +47,7 @@ void find_contact_nodes(State& s) {
   const GridLayout& L = s.layout;
   const int reach_y = L.axisymmetric ? 0 : 1;
   for (std::size_t n = 0; n < L.node_count(); ++n) {
-    if (!s.grid.shared[n]) continue;
+    if (s.grid.reached_by[n] != GridFields::kManyBodies) continue;
     s.grid.contact_slot[n] = s.contact.add(n);
     const int i = static_cast<int>(n % L.nodes[0]);
     const int j = static_cast<int>((n / L.nodes[0]) % L.nodes[1]);
@@ -120,12 +120,11 @@ double update_body_stress(State& s, const BodyRange& body) {
       Eigen::Matrix3d L = Eigen::Matrix3d::Zero();
       double radial_velocity = 0.0;
       st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
-        NodeView v;
-        if (!node_view(s, n, b, v)) return;
+        const NodeView v = node_view(s, n, b);
         const double grad[3] = {gx, gy, gz};
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) L(i, j) += v.p[i] / v.m * grad[j];
-        radial_velocity += w * v.p[0] / v.m;
+          for (int j = 0; j < 3; ++j) L(i, j) += v.v[i] * grad[j];
+        radial_velocity += w * v.v[0];
       });
       // In r-z the hoop strain rate is v_r / r.
       if constexpr (Axisymmetric) L(1, 1) = radial_velocity / P.position[0][p];
@@ -195,13 +194,15 @@ void musl_step(State& s) {
   gather_contact_points<Shape, Axisymmetric>(s);            //   surfaces, nodal D_bond (4.6)
   resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
                   s.contact_result);
-  mark_touching_points<Shape, Axisymmetric>(s);     //   the bonding set S (§4.1.1)
-  apply_node_constraints(s, /*force_too=*/true);    //   held nodes stay held
-  update_point_velocities<Shape, Axisymmetric>(s);  // step 7, eq 3.32
-  remap_momentum<Shape, Axisymmetric>(s);           // step 8, eq 3.33 (MUSL)
-  apply_node_constraints(s, /*force_too=*/false);   //   with the essential BCs
-  double max_speed = 0.0;                           // steps 9-11, eqs 3.34-3.36
-  for (const BodyRange& body : s.bodies)            //   and Appendix A
+  mark_touching_points<Shape, Axisymmetric>(s);        //   the bonding set S (§4.1.1)
+  apply_node_constraints(s, /*force_too=*/true);       //   held nodes stay held
+  compute_nodal_velocities(s, /*with_forces=*/true);   //   v = p/m, dv = f dt/m
+  update_point_velocities<Shape, Axisymmetric>(s);     // step 7, eq 3.32
+  remap_momentum<Shape, Axisymmetric>(s);              // step 8, eq 3.33 (MUSL)
+  apply_node_constraints(s, /*force_too=*/false);      //   with the essential BCs
+  compute_nodal_velocities(s, /*with_forces=*/false);  //   v = p/m of the re-map
+  double max_speed = 0.0;                              // steps 9-11, eqs 3.34-3.36
+  for (const BodyRange& body : s.bodies)               //   and Appendix A
     max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
   s.max_signal_speed = max_speed;
   account_absorbed_work(s);

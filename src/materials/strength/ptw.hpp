@@ -21,9 +21,15 @@ inline constexpr double kPtwMinStrainRate = 1e-6;
 // Eq 2.8: the reciprocal time for a transverse wave to cross an atom,
 // xi_dot = (1/2) (4 pi rho / (3 M))^(1/3) (mu / rho)^(1/2). In SI (rho kg/m^3, M kg, mu Pa) the
 // result is in 1/s with no conversion factor (the thesis' code needed its um/us/ng/MPa set).
-inline double ptw_atomic_rate(const Ptw& p, double density, double shear_modulus) {
-  return 0.5 * std::cbrt(4.0 * std::numbers::pi * density / (3.0 * p.atomic_mass)) *
-         std::sqrt(shear_modulus / density);
+// Returned as ln(gamma xi_dot), what eq 2.7 uses, from eq 2.8 raised to the sixth power,
+// (gamma xi_dot)^6 = gamma^6 (4 pi / (3 M))^2 mu^3 / (64 rho): one log where the direct form
+// takes a cube root, a square root and a log. (Al at rest: about 6e49, far from overflow.)
+inline double ptw_log_atomic_rate(const Ptw& p, double density, double shear_modulus) {
+  const double g2 = p.gamma * p.gamma;
+  const double k = 4.0 * std::numbers::pi / (3.0 * p.atomic_mass);
+  return std::log(g2 * g2 * g2 * k * k * shear_modulus * shear_modulus * shear_modulus /
+                  (64.0 * density)) /
+         6.0;
 }
 
 // PTW within one step: the terms of eqs 2.7-2.8 that depend only on the step's conditions
@@ -35,7 +41,7 @@ class PtwStep {
       : p_(p),
         mu_(c.shear_modulus),
         T_hat_(c.temperature / c.melt_temperature),
-        ln_gamma_xi_(std::log(p.gamma * ptw_atomic_rate(p, c.density, c.shear_modulus))) {}
+        ln_gamma_xi_(ptw_log_atomic_rate(p, c.density, c.shear_modulus)) {}
 
   double operator()(double eqps, double rate) const {
     if (T_hat_ >= 1.0) return 0.0;  // melted: no strength
