@@ -676,6 +676,160 @@ def command_info(options):
         print("history columns: " + ", ".join(History(history).columns))
 
 
+
+# --------------------------------------------------------------------------------------
+# Studies: vcrit, pbcp-velocity, calibration (docs/studies.md)
+# --------------------------------------------------------------------------------------
+
+# Thesis Table 5.4: predicted critical velocity per particle size (um -> m/s).
+THESIS_TABLE_54 = [(14, 824), (18, 809), (22, 791), (26, 776), (30, 761)]
+# The experimental critical velocities the thesis calibrates on (§5.1.1), +-2 %.
+EXPERIMENTS = [(14, 810), (30, 770)]
+
+
+def read_csv_rows(path):
+    if not os.path.exists(path):
+        raise PlotError(f"{path}: no such file")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise PlotError(f"{path}: no rows")
+    return rows
+
+
+def read_json(path):
+    import json
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except OSError as e:
+        raise PlotError(f"{path}: cannot read ({e.strerror})") from None
+    except ValueError as e:
+        raise PlotError(f"{path}: not JSON ({e})") from None
+
+
+def command_vcrit(options):
+    folder = require_dir(options.dir)
+    rows = read_csv_rows(os.path.join(folder, "vcrit.csv"))
+    d = np.array([_to_float(r["diameter_um"]) for r in rows])
+    v = np.array([_to_float(r["vcrit_ms"]) for r in rows])
+    lower = np.array([_to_float(r["lower_ms"]) for r in rows])
+    fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 4.0))
+    found = ~np.isnan(v)
+    ax.errorbar(d[found], v[found], yerr=[v[found] - lower[found], 0 * v[found]],
+                fmt="o", color="C0", capsize=3, label="coldspray (bracket below)")
+    fit_path = os.path.join(folder, "vcrit_fit.json")
+    span = np.array([min(d.min(), 14.0), max(d.max(), 30.0)])
+    if os.path.exists(fit_path):
+        fit = read_json(fit_path)
+        ax.plot(span, fit["a"] + fit["b"] * span, "-", color="C0",
+                label=f"fit: {fit['a']:.4g} + {fit['b']:.3g} d m/s")
+    if not options.no_thesis:
+        t = np.array(THESIS_TABLE_54, dtype=float)
+        ax.plot(t[:, 0], t[:, 1], "s--", color="C1", label="thesis Table 5.4")
+    if not options.no_experiments:
+        e = np.array(EXPERIMENTS, dtype=float)
+        ax.errorbar(e[:, 0], e[:, 1], yerr=0.02 * e[:, 1], fmt="k^", capsize=3,
+                    label="experiment (±2 %)")
+    ax.set_xlabel("particle diameter (um)")
+    ax.set_ylabel("critical velocity (m/s)")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save_figure(fig, options.out, options.dpi)
+
+
+def command_pbcp_velocity(options):
+    folder = require_dir(options.dir)
+    rows = [r for r in read_csv_rows(os.path.join(folder, "vcrit_runs.csv")) if r["status"] == "ok"]
+    if not rows:
+        raise PlotError(f"{folder}/vcrit_runs.csv: no finished run")
+    sizes = sorted({_to_float(r["diameter_um"]) for r in rows})
+    fig, axes = plt.subplots(2, 1, sharex=True, layout="constrained",
+                             figsize=(options.panel_width, 6.0))
+    for k, size in enumerate(sizes):
+        mine = sorted((_to_float(r["velocity_ms"]), r) for r in rows
+                      if _to_float(r["diameter_um"]) == size)
+        speed = [m[0] for m in mine]
+        axes[0].plot(speed, [_to_float(m[1]["pbcp"]) for m in mine], "o-", color=f"C{k}",
+                     label=f"{size:g} um")
+        axes[1].plot(speed, [_to_float(m[1]["v_rest"]) for m in mine], "o-", color=f"C{k}")
+    axes[0].axhline(options.pbcp_tolerance, color="k", ls="--", lw=1)
+    for sign in (-1, 1):
+        axes[1].axhline(sign * options.rest_tolerance, color="k", ls="--", lw=1)
+    axes[0].set_ylabel("PBCP (%)")
+    axes[1].set_ylabel("v_rest (m/s)")
+    axes[1].set_xlabel("impact velocity (m/s)")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(title="particle")
+    save_figure(fig, options.out, options.dpi)
+
+
+PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
+                    "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
+                    "critical_strain": (r"$\epsilon_c$", 1.0),
+                    "critical_strain_rate": (r"$\dot\epsilon_c$ (1/s)", 1.0)}
+
+
+def command_calibration(options):
+    folder = require_dir(options.dir)
+    result = read_json(os.path.join(folder, "calibration.json"))
+    rows = read_csv_rows(os.path.join(folder, "runs.csv"))
+    keys = [result["parameters"]["x1"]["key"], result["parameters"]["x2"]["key"]]
+    grids = result["grids"]
+    sizes = grids[0]["sizes"]
+    fig, axes = plt.subplots(1, len(sizes) + 1, layout="constrained", squeeze=False,
+                             figsize=(options.panel_width * (len(sizes) + 1), 3.8))
+    axes = axes[0]
+    for ax, size in zip(axes, sizes):  # Fig 5.3a/b: restitution vs PBCP or ABP
+        rule = size["classify"]
+        measure = "pbcp" if rule["by"] == "cor-pbcp" else "abp"
+        mine = [r for r in rows if r["size"] == size["size"] and r["y"] != ""]
+        for y, colour, label in (("1", "C2", "bonded"), ("0", "C3", "not bonded")):
+            pick = [r for r in mine if r["y"] == y]
+            ax.plot([_to_float(r[measure]) for r in pick], [_to_float(r["cor"]) for r in pick],
+                    "o", color=colour, label=label, ms=4)
+        ax.axhline(rule["cor_max"], color="k", lw=1)
+        ax.axvline(rule[measure + "_min"], color="k", lw=1)
+        ax.set_xlabel("PBCP (%)" if measure == "pbcp" else "average bond parameter")
+        ax.set_ylabel("restitution ratio")
+        ax.set_title(f"{size['diameter_um']:g} um at {size['velocity_ms']:g} m/s")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small")
+    ax = axes[-1]  # Fig 5.3c / 5.1 (one grid) or Fig 5.7 (several): boundaries and crossing
+    styles = ["-", "--", ":", "-."]
+    (xlabel, xscale), (ylabel, yscale) = (PARAMETER_LABELS.get(k, (k, 1.0)) for k in keys)
+    for g, grid in enumerate(grids):
+        for s, size in enumerate(grid["sizes"]):
+            if not size.get("boundary_csv"):
+                continue
+            b = read_csv_rows(os.path.join(folder, size["boundary_csv"]))
+            for c, curve in enumerate(sorted({r["curve"] for r in b})):
+                pts = np.array([[_to_float(r["x1"]), _to_float(r["x2"])] for r in b
+                                if r["curve"] == curve])
+                ax.plot(pts[:, 0] * xscale, pts[:, 1] * yscale, styles[g % 4], color=f"C{s}",
+                        label=(f"{size['size']}" + (f", {grid['grid']}" if len(grids) > 1 else ""))
+                        if c == 0 else None)
+        if grid.get("calibrated"):
+            p = grid["calibrated"]
+            ax.plot(p[keys[0]] * xscale, p[keys[1]] * yscale, "k*", ms=12,
+                    label=f"calibrated ({grid['grid']})" if len(grids) > 1 else "calibrated")
+    x = result["parameters"]["x1"]
+    y = result["parameters"]["x2"]
+    ax.set_xlim(x["from"] * xscale, x["to"] * xscale)
+    ax.set_ylim(y["from"] * yscale, y["to"] * yscale)
+    if x["spacing"] == "log":
+        ax.set_xscale("log")
+    if y["spacing"] == "log":
+        ax.set_yscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title("bonding boundaries Z = 0")
+    ax.grid(True, alpha=0.3)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize="small")
+    save_figure(fig, options.out, options.dpi)
+
 # --------------------------------------------------------------------------------------
 # Command line
 # --------------------------------------------------------------------------------------
@@ -712,6 +866,35 @@ def build_parser():
     history.add_argument("--dpi", type=int, default=150)
     history.add_argument("--out", required=True, help="PNG file to write")
     history.set_defaults(run=command_history)
+
+    vcrit = commands.add_parser("vcrit", help="critical velocity vs diameter (coldspray vcrit)")
+    vcrit.add_argument("dir", help="vcrit output folder (vcrit.csv, vcrit_fit.json)")
+    vcrit.add_argument("--no-thesis", action="store_true", help="leave out thesis Table 5.4")
+    vcrit.add_argument("--no-experiments", action="store_true",
+                       help="leave out the experimental 14 um 810 m/s and 30 um 770 m/s")
+    vcrit.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    vcrit.add_argument("--dpi", type=int, default=150)
+    vcrit.add_argument("--out", required=True, help="PNG file to write")
+    vcrit.set_defaults(run=command_vcrit)
+
+    pbcp = commands.add_parser("pbcp-velocity",
+                               help="PBCP and v_rest vs impact velocity per size (thesis Fig 5.13)")
+    pbcp.add_argument("dir", help="vcrit output folder (vcrit_runs.csv)")
+    pbcp.add_argument("--pbcp-tolerance", type=float, default=5.0, help="%% (dashed line)")
+    pbcp.add_argument("--rest-tolerance", type=float, default=0.6, help="m/s (dashed lines)")
+    pbcp.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    pbcp.add_argument("--dpi", type=int, default=150)
+    pbcp.add_argument("--out", required=True, help="PNG file to write")
+    pbcp.set_defaults(run=command_pbcp_velocity)
+
+    calibration = commands.add_parser(
+        "calibration", help="restitution vs PBCP/ABP per size and the bonding boundaries "
+                            "(thesis Figs 5.3, 5.7)")
+    calibration.add_argument("dir", help="calibrate output folder (calibration.json, runs.csv)")
+    calibration.add_argument("--panel-width", type=float, default=4.0, help="inches per panel")
+    calibration.add_argument("--dpi", type=int, default=150)
+    calibration.add_argument("--out", required=True, help="PNG file to write")
+    calibration.set_defaults(run=command_calibration)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

@@ -12,5 +12,7 @@ void add_materials(CLI::App& app);
 void add_material_test(CLI::App& app);
 void add_sweep(CLI::App& app);
 void add_impact(CLI::App& app);
+void add_vcrit(CLI::App& app);
+void add_calibrate(CLI::App& app);
 
 }  // namespace coldspray::cli

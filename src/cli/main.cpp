@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   cli::add_materials(app);
   cli::add_material_test(app);
   cli::add_sweep(app);
+  cli::add_vcrit(app);
+  cli::add_calibrate(app);
 
   try {
     app.parse(argc, argv);

@@ -1,7 +1,6 @@
 #include "studies/sweep.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <atomic>
@@ -10,12 +9,9 @@
 #include <iostream>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <thread>
 
-#include "core/error.hpp"
 #include "io/atomic_file.hpp"
-#include "run/run.hpp"
-#include "run/summary.hpp"
+#include "studies/case_runner.hpp"
 
 namespace coldspray::studies {
 
@@ -30,51 +26,20 @@ std::vector<SweepCase> sweep_cases(const std::vector<Variation>& vary) {
   return cases;
 }
 
-bool case_finished(const fs::path& folder) { return fs::exists(folder / "summary.json"); }
-
 namespace {
 
-// A case that failed before run_case could record it gets a summary with the failure as status.
-void record_failure(const fs::path& folder, const std::string& status) {
-  run::Summary s;
-  s.status = status;
-  run::write_summary_json(s, folder / "summary.json");
-}
-
-// Runs one case into its (cleared) folder; false if it failed.
+// Runs one case into its (cleared) folder, with its overrides listed in overrides.txt.
 bool run_one(const std::string& case_path, const std::vector<case_file::Override>& base,
              const SweepCase& sc, const fs::path& folder) {
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  {
-    std::ofstream list(folder / "overrides.txt");
-    for (const auto& o : sc.overrides) list << o.key << "=" << o.value << "\n";
-  }
-  std::vector<case_file::Override> overrides = base;
-  overrides.insert(overrides.end(), sc.overrides.begin(), sc.overrides.end());
-  try {
-    const case_file::Case c = case_file::load_case(case_path, overrides);
-    run::RunOptions options;
-    options.out_dir = folder;
-    options.progress = false;
-    run::run_case(c, options);
-    return true;
-  } catch (const InputError& e) {
-    record_failure(folder, std::string("input error: ") + e.what());
-  } catch (const RunFault& e) {
-    // run_case has written the summary with the fault; keep a record if it could not.
-    if (!case_finished(folder)) record_failure(folder, std::string("fault: ") + e.what());
-  } catch (const std::exception& e) {
-    record_failure(folder, std::string("error: ") + e.what());
-  }
-  return false;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return quoted + "\"";
+  return run_in_folder(folder, [&] {
+    {
+      std::ofstream list(folder / "overrides.txt");
+      for (const auto& o : sc.overrides) list << o.key << "=" << o.value << "\n";
+    }
+    std::vector<case_file::Override> overrides = base;
+    overrides.insert(overrides.end(), sc.overrides.begin(), sc.overrides.end());
+    return case_file::load_case(case_path, overrides);
+  });
 }
 
 std::string number(const nlohmann::json& j) {
@@ -94,11 +59,6 @@ constexpr const char* kBodyColumns[] = {"cor",
                                         "jetted_fraction",
                                         "crater_depth",
                                         "flattening_ratio"};
-
-nlohmann::json read_summary(const fs::path& folder) {
-  std::ifstream in(folder / "summary.json");
-  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-}
 
 }  // namespace
 
@@ -156,19 +116,11 @@ SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file:
 
   SweepCounts counts;
   counts.cases = cases.size();
-  std::vector<std::size_t> pending;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(options.ranks)) != options.rank) continue;
-    if (case_finished(options.out_dir / cases[i].folder))
-      ++counts.skipped;
-    else
-      pending.push_back(i);
-  }
+  std::vector<fs::path> folders;
+  for (const SweepCase& sc : cases) folders.push_back(options.out_dir / sc.folder);
+  const std::vector<std::size_t> pending =
+      pending_folders(folders, options.rank, options.ranks, counts.skipped);
 
-  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(pending.size())));
-  const int threads = options.threads_per_job > 0 ? options.threads_per_job
-                                                  : std::max(1, omp_get_max_threads() / jobs);
-  std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{0}, failed{0};
   std::mutex report;
   const auto start = std::chrono::steady_clock::now();
@@ -183,22 +135,15 @@ SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file:
                              pending.size(), failed.load(), counts.skipped, eta)
               << std::flush;
   };
-  auto worker = [&] {
-    omp_set_num_threads(threads);
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const SweepCase& sc = cases[pending[k]];
-      const bool ok = run_one(case_path, base, sc, options.out_dir / sc.folder);
-      std::lock_guard<std::mutex> lock(report);
-      ++finished;
-      if (!ok) ++failed;
-      if (options.rank == 0) write_sweep_csv(options.out_dir, vary, cases);
-      progress();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  run_parallel(pending.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
+    const SweepCase& sc = cases[pending[k]];
+    const bool ok = run_one(case_path, base, sc, options.out_dir / sc.folder);
+    std::lock_guard<std::mutex> lock(report);
+    ++finished;
+    if (!ok) ++failed;
+    if (options.rank == 0) write_sweep_csv(options.out_dir, vary, cases);
+    progress();
+  });
   if (options.progress && !pending.empty()) std::cerr << "\n";
   if (options.rank == 0) write_sweep_csv(options.out_dir, vary, cases);
   counts.ran = finished.load();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case/load.hpp"
+#include "studies/case_runner.hpp"
 #include "studies/variation.hpp"
 
 namespace coldspray::studies {
@@ -36,10 +37,6 @@ struct SweepCase {
 };
 
 std::vector<SweepCase> sweep_cases(const std::vector<Variation>& vary);
-
-// A case folder is finished once it holds summary.json (run_case writes it last; a failure is
-// recorded in one too). Unfinished folders are cleared and run again.
-bool case_finished(const std::filesystem::path& folder);
 
 // Runs the cases of this rank not yet finished; writes DIR/sweep.csv (rank 0) after each case
 // and at the end, from the summaries on disk. A failing case is recorded and the sweep goes on.

@@ -1,0 +1,138 @@
+#include "cli/impact_options.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "cli/quantity_option.hpp"
+#include "core/error.hpp"
+#include "core/units.hpp"
+
+namespace coldspray::cli {
+
+namespace {
+
+std::optional<double> optional_quantity(const std::string& option, const std::string& text,
+                                        const units::Dimension& dimension) {
+  if (text.empty()) return std::nullopt;
+  return parse_option_quantity(option, text, dimension);
+}
+
+double positive(const std::string& option, const std::string& text,
+                const units::Dimension& dimension, const char* what) {
+  const double value = parse_option_quantity(option, text, dimension);
+  if (!(value > 0.0)) throw InputError(option, "", fmt::format("{} > 0, got '{}'", what, text));
+  return value;
+}
+
+}  // namespace
+
+void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
+                             const std::function<void()>& particle_options) {
+  sub.add_option("--material", o.material, "Particle material (built-in NAME)")->required();
+  sub.add_option("--substrate-material", o.substrate_material,
+                 "Substrate material (default: the particle's)");
+  particle_options();
+  sub.add_option("--grid", o.grid, "Grid cell / point spacing (thesis §5.1.3)")
+      ->capture_default_str();
+  sub.add_option("--geometry", o.geometry, "axisymmetric (r-z) or 3d")
+      ->check(CLI::IsMember({"axisymmetric", "3d"}))
+      ->capture_default_str();
+  sub.add_option("--symmetry", o.symmetry,
+                 "3D: model one quarter (symmetry planes x = 0, y = 0) or the whole")
+      ->check(CLI::IsMember({"quarter", "none"}))
+      ->capture_default_str();
+  sub.add_option("--bonding", o.bonding, "Bonding model (thesis Chapter 4)")
+      ->check(CLI::IsMember({"none", "strain", "energy"}))
+      ->capture_default_str();
+  sub.add_option("--Gc", o.gc, "Critical adhesion energy, e.g. 1503.74J/m^2 (eq 4.16b)");
+  sub.add_option("--Gc-rate", o.gc_rate, "Critical energy rate, e.g. 2.271J/m^2/us");
+  sub.add_option("--eps-c", o.eps_c, "Critical strain (strain model, eq 4.4)");
+  sub.add_option("--eps-c-rate", o.eps_c_rate, "Critical strain rate, e.g. '8.5e8 1/s'");
+  sub.add_option("--floor", o.floor, "Lower bound of the rate factor of eqs 4.4 and 4.16b");
+  sub.add_option("--end-time", o.end_time, "Simulated time")->capture_default_str();
+  sub.add_option("--shape-function", o.shape_function, "Grid shape functions")
+      ->check(CLI::IsMember({"gimp", "linear"}))
+      ->capture_default_str();
+}
+
+std::pair<double, double> parse_grid(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '/') continue;
+    const std::size_t next = text.find_first_not_of(' ', i + 1);
+    if (next == std::string::npos ||
+        !(std::isdigit(static_cast<unsigned char>(text[next])) || text[next] == '.'))
+      continue;
+    return {units::parse_as(text.substr(0, i), units::kLength),
+            units::parse_as(text.substr(i + 1), units::kLength)};
+  }
+  throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
+}
+
+void check_cell_fits(double cell_size, double diameter, const std::string& where,
+                     const std::string& key) {
+  if (cell_size > 0.0 && diameter < 2.0 * cell_size)
+    throw InputError(where, key,
+                     fmt::format("the cell ({:.4g} um) must be at most half the particle "
+                                 "diameter ({:.4g} um)",
+                                 cell_size * 1e6, diameter * 1e6));
+}
+
+double parse_diameter(const std::string& option, const std::string& text) {
+  return positive(option, text, units::kLength, "must be");
+}
+
+double parse_speed(const std::string& option, const std::string& text) {
+  return positive(option, text, units::kVelocity, "the impact speed towards the substrate must be");
+}
+
+ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
+                       const std::string& command) {
+  ImpactSpec spec;
+  spec.material = o.material;
+  spec.substrate_material = o.substrate_material;
+  spec.diameter = diameter;
+  spec.speed = speed;
+  try {
+    std::tie(spec.cell_size, spec.spacing) = parse_grid(o.grid);
+  } catch (const UnitError& e) {
+    throw InputError("--grid", "", e.what());
+  }
+  check_cell_fits(spec.cell_size, spec.diameter, "--grid");
+  spec.geometry =
+      o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
+  spec.symmetry = o.symmetry == "none" ? Symmetry::None : Symmetry::Quarter;
+  spec.bonding = o.bonding;
+  spec.critical_energy = optional_quantity("--Gc", o.gc, units::kEnergyPerArea);
+  spec.critical_energy_rate =
+      optional_quantity("--Gc-rate", o.gc_rate, units::kEnergyPerAreaPerTime);
+  spec.critical_strain = optional_quantity("--eps-c", o.eps_c, units::kDimensionless);
+  spec.critical_strain_rate = optional_quantity("--eps-c-rate", o.eps_c_rate, units::kRate);
+  spec.floor = optional_quantity("--floor", o.floor, units::kDimensionless);
+  spec.end_time = parse_option_quantity("--end-time", o.end_time, units::kTime);
+  spec.shape_function = o.shape_function;
+  spec.command = command;
+  return spec;
+}
+
+std::string shell_quoted(const std::string& text) {
+  if (text.find_first_of(" '\"$*?[]{};&|<>()\\") == std::string::npos) return text;
+  std::string quoted = "'";
+  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return quoted + "'";
+}
+
+std::string command_line(const std::string& source, const CLI::App& sub,
+                         std::initializer_list<std::string_view> skip) {
+  std::string command = source;
+  for (const CLI::Option* o : sub.get_options()) {
+    const std::string name = o->get_name();
+    if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
+    for (const std::string& value : o->results()) command += " " + name + " " + shell_quoted(value);
+  }
+  return command;
+}
+
+}  // namespace coldspray::cli

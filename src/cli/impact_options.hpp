@@ -1,0 +1,57 @@
+// The options that shape the thesis' particle-on-cylinder case, shared by `coldspray impact`
+// (one diameter and speed) and `coldspray vcrit` (many of each): registration on a subcommand
+// and their translation into an ImpactSpec (cli/impact_case.hpp).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "cli/impact_case.hpp"
+
+namespace coldspray::cli {
+
+// Everything but the particle's diameter and speed, as given on the command line.
+struct ImpactCaseOptions {
+  std::string material, substrate_material, grid = "0.7um/0.175um";
+  std::string geometry = "axisymmetric", symmetry = "quarter", bonding = "energy";
+  std::string gc, gc_rate, eps_c, eps_c_rate, floor;
+  std::string end_time = "80ns", shape_function = "gimp";
+};
+
+// --material (required), --substrate-material, --grid, --geometry, --symmetry, --bonding, --Gc,
+// --Gc-rate, --eps-c, --eps-c-rate, --floor, --end-time, --shape-function; `o` must outlive
+// the parse. `particle_options` is called after the materials, to add the caller's options for
+// the particle's size and speed there (their place in --help and in generated headers).
+void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
+                             const std::function<void()>& particle_options);
+
+// "CELL/SPACING" (e.g. 0.7um/0.175um) in metres: split at the '/' that a number follows, since
+// units hold '/' too (m/s). Throws UnitError.
+std::pair<double, double> parse_grid(const std::string& text);
+
+// A particle narrower than two cells has next to no points and no shape to deform: InputError
+// at `where` (an option or a file location) and `key`, rather than the seeding's "no points".
+void check_cell_fits(double cell_size, double diameter, const std::string& where,
+                     const std::string& key = "");
+
+// A diameter or an impact speed given to `option`: a quantity > 0, else InputError.
+double parse_diameter(const std::string& option, const std::string& text);
+double parse_speed(const std::string& option, const std::string& text);
+
+// The spec of one impact from the options, a diameter and a speed (SI); InputError names the
+// option at fault. `command` is echoed in a written case's header.
+ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
+                       const std::string& command);
+
+std::string shell_quoted(const std::string& text);
+
+// `source` and the subcommand's options as given, without those in `skip`: the header of a
+// generated case file.
+std::string command_line(const std::string& source, const CLI::App& sub,
+                         std::initializer_list<std::string_view> skip);
+
+}  // namespace coldspray::cli

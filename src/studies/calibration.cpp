@@ -1,0 +1,314 @@
+#include "studies/calibration.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+#include "studies/case_runner.hpp"
+#include "studies/decision_boundary.hpp"
+
+namespace coldspray::studies {
+
+namespace fs = std::filesystem;
+
+int classify(const Classification& rule, double cor, double abp, double pbcp) {
+  // Eqs 4.8-4.9: y = 1 for CoR <= tol & ABP >= tol; §5.1.2 puts PBCP in ABP's place. A NaN
+  // fails every comparison, so an undefined measure classifies as not bonded.
+  const bool bond =
+      rule.by == Classification::By::CorPbcp ? pbcp >= rule.pbcp_min : abp >= rule.abp_min;
+  return cor <= rule.cor_max && bond ? 1 : 0;
+}
+
+std::string describe(const Classification& rule) {
+  return rule.by == Classification::By::CorPbcp
+             ? fmt::format("cor <= {:.6g} and pbcp >= {:.6g} %", rule.cor_max, rule.pbcp_min)
+             : fmt::format("cor <= {:.6g} and abp >= {:.6g}", rule.cor_max, rule.abp_min);
+}
+
+std::vector<double> parameter_values(const ParameterAxis& axis) {
+  if (axis.count < 1) throw std::invalid_argument("parameter axis: count must be >= 1");
+  if (axis.log && !(axis.from > 0.0 && axis.to > 0.0))
+    throw std::invalid_argument("parameter axis: log spacing needs from, to > 0");
+  if (axis.count == 1) return {axis.from};
+  const double a = axis.log ? std::log10(axis.from) : axis.from;
+  const double b = axis.log ? std::log10(axis.to) : axis.to;
+  std::vector<double> values;
+  for (int i = 0; i < axis.count; ++i) {
+    // The ends exactly as given; the others counted from them, not accumulated.
+    const double t = a + (b - a) * i / (axis.count - 1);
+    values.push_back(i == 0                ? axis.from
+                     : i == axis.count - 1 ? axis.to
+                     : axis.log            ? std::pow(10.0, t)
+                                           : t);
+  }
+  return values;
+}
+
+std::string CalibrationSize::label() const { return fmt::format("{:.6g}um", diameter * 1e6); }
+
+std::string grid_label(const std::string& grid) {
+  std::string label;
+  for (const char ch : grid)
+    if (ch != ' ') label += ch == '/' ? '-' : ch;
+  return label;
+}
+
+std::vector<CalibrationRun> calibration_runs(const CalibrationPlan& plan, const fs::path& out_dir) {
+  const std::vector<double> v1 = parameter_values(plan.x1), v2 = parameter_values(plan.x2);
+  std::vector<CalibrationRun> runs;
+  for (std::size_t g = 0; g < plan.grids.size(); ++g)
+    for (std::size_t s = 0; s < plan.sizes.size(); ++s)
+      for (const double x1 : v1)
+        for (const double x2 : v2)
+          runs.push_back(
+              {g, s, x1, x2,
+               out_dir / grid_label(plan.grids[g]) /
+                   fmt::format("{}-v{:.6g}ms", plan.sizes[s].label(), plan.sizes[s].velocity) /
+                   fmt::format("p{:.6g}_{:.6g}", x1, x2)});
+  return runs;
+}
+
+CalibrationCounts run_calibration(const CalibrationPlan& plan,
+                                  const CalibrationCaseMaker& make_case,
+                                  const CalibrationRunOptions& options) {
+  const std::vector<CalibrationRun> runs = calibration_runs(plan, options.out_dir);
+  for (std::size_t g = 0; g < plan.grids.size(); ++g)
+    for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
+      make_case({g, s, plan.x1.from, plan.x2.from, {}});
+      make_case({g, s, plan.x1.to, plan.x2.to, {}});
+    }
+  CalibrationCounts counts;
+  counts.runs = runs.size();
+  std::vector<fs::path> folders;
+  for (const CalibrationRun& run : runs) folders.push_back(run.folder);
+  const std::vector<std::size_t> pending =
+      pending_folders(folders, options.rank, options.ranks, counts.skipped);
+  std::atomic<std::size_t> done{0}, failed{0};
+  std::mutex report;
+  const auto start = std::chrono::steady_clock::now();
+  run_parallel(pending.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
+    const CalibrationRun& run = runs[pending[k]];
+    const bool ok = run_in_folder(run.folder, [&] { return make_case(run); });
+    std::lock_guard<std::mutex> lock(report);
+    ++done;
+    if (!ok) ++failed;
+    if (!options.progress) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << fmt::format("\rcalibrate: {}/{} run, {} failed, {} skipped, ETA {:.0f} s   ",
+                             done.load(), pending.size(), failed.load(), counts.skipped,
+                             elapsed / done.load() * (pending.size() - done.load()))
+              << std::flush;
+  });
+  if (options.progress && !pending.empty()) std::cerr << "\n";
+  counts.ran = done.load();
+  counts.failed = failed.load();
+  return counts;
+}
+
+namespace {
+
+struct Measured {
+  std::string status = "pending";
+  double cor = NAN, abp = NAN, pbcp = NAN, v_rest = NAN;
+  bool usable = false;  // ok, with the particle's measures
+};
+
+Measured measure(const fs::path& folder) {
+  Measured m;
+  if (!case_finished(folder)) return m;
+  const nlohmann::json s = read_summary(folder);
+  if (!s.is_object()) {
+    m.status = "unreadable summary";
+    return m;
+  }
+  m.status = s.value("status", std::string("no status"));
+  if (m.status != "ok" || !s.contains("bodies") || !s["bodies"].contains("particle")) return m;
+  const nlohmann::json& p = s["bodies"]["particle"];
+  auto get = [&p](const char* key) {
+    return p.contains(key) && p[key].is_number() ? p[key].get<double>() : NAN;
+  };
+  m.cor = get("cor");
+  m.abp = get("abp");
+  m.pbcp = get("pbcp");
+  m.v_rest = get("v_rest");
+  m.usable = true;
+  return m;
+}
+
+std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
+
+nlohmann::json classification_json(const Classification& c) {
+  nlohmann::json j = {{"by", c.by == Classification::By::CorPbcp ? "cor-pbcp" : "cor-abp"},
+                      {"cor_max", c.cor_max}};
+  if (c.by == Classification::By::CorPbcp)
+    j["pbcp_min"] = c.pbcp_min;
+  else
+    j["abp_min"] = c.abp_min;
+  return j;
+}
+
+nlohmann::json fit_json(const LogisticFit& f) {
+  auto vector = [](const Eigen::VectorXd& v) {
+    return std::vector<double>(v.data(), v.data() + v.size());
+  };
+  return {{"degree", f.degree},
+          {"theta", vector(f.theta)},
+          {"theta_unstandardized", vector(f.theta_unstandardized())},
+          {"transform",
+           {f.scaling.transform[0] == InputTransform::Log10 ? "log10" : "identity",
+            f.scaling.transform[1] == InputTransform::Log10 ? "log10" : "identity"}},
+          {"mean", {f.scaling.mean[0], f.scaling.mean[1]}},
+          {"scale", {f.scaling.scale[0], f.scaling.scale[1]}},
+          {"accuracy", f.accuracy},
+          {"iterations", f.iterations},
+          {"converged", f.converged},
+          {"cost", f.cost}};
+}
+
+}  // namespace
+
+std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const fs::path& out_dir,
+                                            const std::string& name) {
+  const std::vector<CalibrationRun> runs = calibration_runs(plan, out_dir);
+  std::vector<GridResult> results(plan.grids.size());
+  std::vector<std::vector<std::vector<Sample>>> samples(
+      plan.grids.size(), std::vector<std::vector<Sample>>(plan.sizes.size()));
+  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
+    results[g].grid = plan.grids[g];
+    results[g].sizes.resize(plan.sizes.size());
+  }
+
+  io::write_atomically(out_dir / "runs.csv", [&](std::ostream& out) {
+    out << "grid,size,diameter_um,velocity_ms," << plan.x1.key << "," << plan.x2.key
+        << ",status,cor,abp,pbcp,v_rest,y\n";
+    for (const CalibrationRun& run : runs) {
+      const CalibrationSize& size = plan.sizes[run.size];
+      const Measured m = measure(run.folder);
+      SizeResult& r = results[run.grid].sizes[run.size];
+      ++r.runs;
+      int y = -1;
+      if (m.usable) {
+        y = classify(size.classify, m.cor, m.abp, m.pbcp);
+        ++(y == 1 ? r.bonded : r.not_bonded);
+        samples[run.grid][run.size].push_back({run.x1, run.x2, y});
+      } else {
+        ++r.failed;
+      }
+      out << csv_field(plan.grids[run.grid]) << "," << size.label() << ","
+          << csv_number(size.diameter * 1e6) << "," << csv_number(size.velocity) << ","
+          << csv_number(run.x1) << "," << csv_number(run.x2) << "," << csv_field(m.status) << ","
+          << csv_number(m.cor) << "," << csv_number(m.abp) << "," << csv_number(m.pbcp) << ","
+          << csv_number(m.v_rest) << "," << (y < 0 ? std::string("") : std::to_string(y)) << "\n";
+    }
+  });
+
+  const double lo1 = std::min(plan.x1.from, plan.x1.to), hi1 = std::max(plan.x1.from, plan.x1.to);
+  const double lo2 = std::min(plan.x2.from, plan.x2.to), hi2 = std::max(plan.x2.from, plan.x2.to);
+  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
+    GridResult& gr = results[g];
+    std::vector<Boundary> boundaries(plan.sizes.size());
+    for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
+      SizeResult& r = gr.sizes[s];
+      if (r.bonded == 0 || r.not_bonded == 0) {
+        r.diagnosis = fmt::format(
+            "one class only ({} bonded, {} not bonded{}): no boundary; widen the parameter "
+            "rectangle or adjust the tolerances ({})",
+            r.bonded, r.not_bonded, r.failed ? fmt::format(", {} failed", r.failed) : "",
+            describe(plan.sizes[s].classify));
+        continue;
+      }
+      try {
+        r.fit = fit_logistic(samples[g][s], plan.fit);
+        boundaries[s] = decision_boundary(*r.fit, lo1, hi1, lo2, hi2);
+      } catch (const std::exception& e) {
+        r.fit.reset();
+        r.diagnosis = std::string("fit failed: ") + e.what();
+        continue;
+      }
+      r.boundary_curves = boundaries[s].curves.size();
+      r.boundary_file =
+          plan.grids.size() == 1
+              ? fmt::format("boundary_{}.csv", plan.sizes[s].label())
+              : fmt::format("boundary_{}_{}.csv", grid_label(plan.grids[g]), plan.sizes[s].label());
+      write_boundary_csv(out_dir / r.boundary_file, boundaries[s]);
+      if (r.boundary_curves == 0)
+        r.diagnosis = "the boundary Z = 0 does not cross the parameter rectangle";
+    }
+    if (plan.sizes.size() < 2) {
+      gr.diagnosis = "one size: no second boundary to intersect";
+      continue;
+    }
+    if (!gr.sizes[0].fit || !gr.sizes[1].fit || gr.sizes[0].boundary_curves == 0 ||
+        gr.sizes[1].boundary_curves == 0) {
+      gr.diagnosis = "no intersection: a size has no boundary in the rectangle (see its diagnosis)";
+      continue;
+    }
+    const std::vector<Intersection> points = intersect_boundaries(boundaries[0], boundaries[1]);
+    for (const Intersection& p : points) gr.intersections.push_back({p.point[0], p.point[1]});
+    const PlaneGrid& frame = boundaries[0].grid;
+    const Eigen::Vector2d centre =
+        frame.from_plot(0.5 * (frame.to_plot({lo1, lo2}) + frame.to_plot({hi1, hi2})));
+    if (const auto nearest = nearest_intersection(points, centre, frame))
+      gr.calibrated = std::array<double, 2>{nearest->point[0], nearest->point[1]};
+    else
+      gr.diagnosis =
+          "no intersection: the two sizes' boundaries do not cross inside the parameter rectangle";
+  }
+
+  nlohmann::json j;
+  j["name"] = name;
+  auto axis_json = [](const ParameterAxis& a) {
+    return nlohmann::json{{"key", a.key},
+                          {"unit", a.unit},
+                          {"from", a.from},
+                          {"to", a.to},
+                          {"count", a.count},
+                          {"spacing", a.log ? "log" : "linear"},
+                          {"values", parameter_values(a)}};
+  };
+  j["parameters"] = {{"x1", axis_json(plan.x1)}, {"x2", axis_json(plan.x2)}};
+  j["fit_options"] = {{"ridge", plan.fit.ridge}, {"degree", plan.fit.degree}};
+  j["grids"] = nlohmann::json::array();
+  for (const GridResult& gr : results) {
+    nlohmann::json gj = {{"grid", gr.grid}, {"sizes", nlohmann::json::array()}};
+    for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
+      const SizeResult& r = gr.sizes[s];
+      const CalibrationSize& size = plan.sizes[s];
+      nlohmann::json sj = {
+          {"size", size.label()},
+          {"diameter_um", size.diameter * 1e6},
+          {"velocity_ms", size.velocity},
+          {"classify", classification_json(size.classify)},
+          {"runs", r.runs},
+          {"bonded", r.bonded},
+          {"not_bonded", r.not_bonded},
+          {"failed", r.failed},
+          {"fit", r.fit ? fit_json(*r.fit) : nlohmann::json()},
+          {"boundary_csv",
+           r.boundary_file.empty() ? nlohmann::json() : nlohmann::json(r.boundary_file)},
+          {"diagnosis", r.diagnosis.empty() ? nlohmann::json() : nlohmann::json(r.diagnosis)}};
+      gj["sizes"].push_back(sj);
+    }
+    gj["intersections"] = nlohmann::json::array();
+    for (const auto& p : gr.intersections)
+      gj["intersections"].push_back({{plan.x1.key, p[0]}, {plan.x2.key, p[1]}});
+    gj["calibrated"] = gr.calibrated ? nlohmann::json{{plan.x1.key, (*gr.calibrated)[0]},
+                                                      {plan.x2.key, (*gr.calibrated)[1]}}
+                                     : nlohmann::json();
+    gj["diagnosis"] = gr.diagnosis.empty() ? nlohmann::json() : nlohmann::json(gr.diagnosis);
+    j["grids"].push_back(gj);
+  }
+  io::write_atomically(out_dir / "calibration.json",
+                       [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  return results;
+}
+
+}  // namespace coldspray::studies

@@ -1,0 +1,95 @@
+#include "studies/case_runner.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <thread>
+#include <vector>
+
+#include "core/error.hpp"
+#include "run/run.hpp"
+#include "run/summary.hpp"
+
+namespace coldspray::studies {
+
+namespace fs = std::filesystem;
+
+bool case_finished(const fs::path& folder) { return fs::exists(folder / "summary.json"); }
+
+nlohmann::json read_summary(const fs::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  if (!in) return nlohmann::json(nlohmann::json::value_t::discarded);
+  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+namespace {
+
+// A case that failed before run_case could record it gets a summary with the failure as status.
+void record_failure(const fs::path& folder, const std::string& status) {
+  run::Summary s;
+  s.status = status;
+  run::write_summary_json(s, folder / "summary.json");
+}
+
+}  // namespace
+
+bool run_in_folder(const fs::path& folder, const std::function<case_file::Case()>& load) {
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  try {
+    const case_file::Case c = load();
+    run::RunOptions options;
+    options.out_dir = folder;
+    options.progress = false;
+    run::run_case(c, options);
+    return true;
+  } catch (const InputError& e) {
+    record_failure(folder, std::string("input error: ") + e.what());
+  } catch (const RunFault& e) {
+    // run_case has written the summary with the fault; keep a record if it could not.
+    if (!case_finished(folder)) record_failure(folder, std::string("fault: ") + e.what());
+  } catch (const std::exception& e) {
+    record_failure(folder, std::string("error: ") + e.what());
+  }
+  return false;
+}
+
+std::vector<std::size_t> pending_folders(const std::vector<fs::path>& folders, int rank, int ranks,
+                                         std::size_t& skipped) {
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < folders.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(ranks)) != rank) continue;
+    if (case_finished(folders[i]))
+      ++skipped;
+    else
+      pending.push_back(i);
+  }
+  return pending;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+void run_parallel(std::size_t count, int jobs, int threads_per_job,
+                  const std::function<void(std::size_t)>& body) {
+  const int workers = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
+  const int threads =
+      threads_per_job > 0 ? threads_per_job : std::max(1, omp_get_max_threads() / workers);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    omp_set_num_threads(threads);
+    for (std::size_t k = next++; k < count; k = next++) body(k);
+  };
+  std::vector<std::thread> pool;
+  for (int j = 1; j < workers; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+}
+
+}  // namespace coldspray::studies

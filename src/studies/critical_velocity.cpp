@@ -1,0 +1,170 @@
+#include "studies/critical_velocity.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+#include "studies/case_runner.hpp"
+
+namespace coldspray::studies {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kUm = 1e-6;
+
+// A run whose summary is not "ok": the search cannot go on, its outcome is unknown.
+class FailedRun : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::string label(double x) { return fmt::format("{:.6g}", x); }
+
+double number_or_nan(const nlohmann::json& j, const char* key) {
+  return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>()
+                                                                : std::nan("");
+}
+
+const nlohmann::json& particle(const nlohmann::json& s) {
+  static const nlohmann::json none;
+  if (!s.is_object() || !s.contains("bodies") || !s["bodies"].contains("particle")) return none;
+  return s["bodies"]["particle"];
+}
+
+// One diameter's search, its runs in DIR/d<D>um/v<V>ms.
+VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double diameter) {
+  VcritRow row;
+  row.diameter = diameter;
+  auto bonded = [&](double speed) {
+    const fs::path folder = impact_folder(o.out_dir, diameter, speed);
+    ++row.runs_used;
+    if (!case_finished(folder)) {
+      run_in_folder(folder, [&] { return make_case(diameter, speed); });
+      ++row.simulated;
+    }
+    const nlohmann::json s = read_summary(folder);
+    const std::string status =
+        s.is_object() ? s.value("status", std::string("no status")) : "unreadable summary";
+    if (status != "ok") throw FailedRun(fmt::format("failed at {} m/s: {}", label(speed), status));
+    return s.contains("system") && s["system"].value("bonded", false);
+  };
+  try {
+    row.search = find_threshold(bonded, o.vmin, o.vmax, o.tol, o.max_runs, nullptr,
+                                ThresholdLimits{o.vmin, o.vmax});
+    row.status = to_string(row.search.status);
+  } catch (const FailedRun& e) {
+    row.status = e.what();
+    return row;
+  }
+  if (row.search.found()) {
+    const nlohmann::json s = read_summary(impact_folder(o.out_dir, diameter, row.search.threshold));
+    const nlohmann::json& p = particle(s);
+    row.pbcp = number_or_nan(p, "pbcp");
+    row.v_rest = number_or_nan(p, "v_rest");
+  }
+  return row;
+}
+
+std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
+
+}  // namespace
+
+fs::path impact_folder(const fs::path& out_dir, double diameter, double speed) {
+  return out_dir / fmt::format("d{}um", label(diameter / kUm)) / fmt::format("v{}ms", label(speed));
+}
+
+std::vector<VcritRow> find_critical_velocities(const ImpactCaseMaker& make_case,
+                                               const VcritOptions& options) {
+  if (!(options.vmin > 0.0 && options.vmin < options.vmax))
+    throw std::invalid_argument("vcrit: need 0 < vmin < vmax");
+  for (const double d : options.diameters) {
+    make_case(d, options.vmin);
+    make_case(d, options.vmax);
+  }
+  std::vector<std::size_t> mine;
+  for (std::size_t i = 0; i < options.diameters.size(); ++i)
+    if (static_cast<int>(i % static_cast<std::size_t>(options.ranks)) == options.rank)
+      mine.push_back(i);
+  std::vector<VcritRow> rows(mine.size());
+  run_parallel(mine.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
+    rows[k] = search(make_case, options, options.diameters[mine[k]]);
+  });
+  return rows;
+}
+
+void write_vcrit_csv(const fs::path& path, const std::vector<VcritRow>& rows) {
+  io::write_atomically(path, [&](std::ostream& out) {
+    out << "diameter_um,vcrit_ms,lower_ms,pbcp,v_rest,runs_used,status\n";
+    for (const VcritRow& r : rows)
+      out << csv_number(r.diameter / kUm) << "," << csv_number(r.search.threshold) << ","
+          << csv_number(r.search.lower) << "," << csv_number(r.pbcp) << "," << csv_number(r.v_rest)
+          << "," << r.runs_used << "," << csv_field(r.status) << "\n";
+  });
+}
+
+void write_vcrit_runs_csv(const fs::path& out_dir, const std::vector<double>& diameters) {
+  io::write_atomically(out_dir / "vcrit_runs.csv", [&](std::ostream& out) {
+    out << "diameter_um,velocity_ms,status,bonded,cor,v_rest,abp,pbcp\n";
+    for (const double d : diameters) {
+      const fs::path folder = impact_folder(out_dir, d, 1.0).parent_path();
+      std::vector<std::pair<double, fs::path>> runs;
+      std::error_code ec;
+      for (const auto& entry : fs::directory_iterator(folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() < 4 || name.front() != 'v' || !name.ends_with("ms")) continue;
+        try {
+          runs.emplace_back(std::stod(name.substr(1, name.size() - 3)), entry.path());
+        } catch (const std::exception&) {
+          continue;  // not a run folder
+        }
+      }
+      std::sort(runs.begin(), runs.end());
+      for (const auto& [speed, run] : runs) {
+        if (!case_finished(run)) continue;
+        const nlohmann::json s = read_summary(run);
+        const nlohmann::json& p = particle(s);
+        const bool bonded =
+            s.is_object() && s.contains("system") && s["system"].value("bonded", false);
+        out << csv_number(d / kUm) << "," << csv_number(speed) << ","
+            << csv_field(s.is_object() ? s.value("status", std::string()) : "unreadable") << ","
+            << (bonded ? 1 : 0) << "," << csv_number(number_or_nan(p, "cor")) << ","
+            << csv_number(number_or_nan(p, "v_rest")) << "," << csv_number(number_or_nan(p, "abp"))
+            << "," << csv_number(number_or_nan(p, "pbcp")) << "\n";
+      }
+    }
+  });
+}
+
+std::optional<LinearFit> fit_vcrit(const std::vector<VcritRow>& rows) {
+  std::vector<double> d, v;
+  for (const VcritRow& r : rows)
+    if (r.search.found()) {
+      d.push_back(r.diameter / kUm);
+      v.push_back(r.search.threshold);
+    }
+  if (d.size() < 2 || std::adjacent_find(d.begin(), d.end(), std::not_equal_to<>()) == d.end())
+    return std::nullopt;
+  return fit_line(d, v);
+}
+
+void write_vcrit_fit(const fs::path& path, const LinearFit& fit) {
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  const nlohmann::json j = {
+      {"model", "vcrit = a + b d"},
+      {"units", {{"d", "um"}, {"vcrit", "m/s"}, {"a", "m/s"}, {"b", "m/s/um"}}},
+      {"a", fit.a},
+      {"b", fit.b},
+      {"r_squared", finite(fit.r_squared)},
+      {"se_a", finite(fit.se_a)},
+      {"se_b", finite(fit.se_b)},
+      {"n", fit.n}};
+  io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+}  // namespace coldspray::studies

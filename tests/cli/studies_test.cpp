@@ -1,0 +1,140 @@
+// `coldspray vcrit` and `coldspray calibrate` on tiny cases: the tables they write, reruns that
+// reuse the runs on disk, a calibration with one class only diagnosed, and the calibration file's
+// input errors (exit 2 with FILE:LINE and the key).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "run_command.hpp"
+#include "temp_dir.hpp"
+
+namespace coldspray::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::make_temp_dir;
+using testing::run_coldspray;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+std::size_t count_entries(const fs::path& folder) {
+  std::size_t n = 0;
+  for (const auto& e : fs::recursive_directory_iterator(folder)) n += e.is_directory() ? 1 : 0;
+  return n;
+}
+
+// A 4 um particle on a 1 um grid for 3 ns. At 3 ns nothing has come to rest, so the verdict's
+// tolerances are eased through --set to make the search bracket (500 m/s: pbcp 50 %, not bonded;
+// 1200 m/s: pbcp 82 %, bonded); the test is of the search's machinery, not of the physics.
+const std::string kVcrit =
+    "vcrit --material al-ptw --diameters 4um --grid 1um/0.5um --end-time 3ns --tol 100m/s "
+    "--threads-per-job 1 --out vc --set metrics.bonded_pbcp=70 "
+    "--set metrics.bonded_rest_speed=50m/s";
+
+TEST(CliStudies, VcritWritesItsTableAndReusesItsRuns) {
+  const std::string dir = make_temp_dir();
+  const auto first = run_coldspray(kVcrit, dir);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const fs::path vc = fs::path(dir) / "vc";
+  const std::string table = read_text(vc / "vcrit.csv");
+  EXPECT_EQ(table.rfind("diameter_um,vcrit_ms,lower_ms,pbcp,v_rest,runs_used,status\n", 0), 0u)
+      << table;
+  EXPECT_NE(table.find(",found\n"), std::string::npos) << table;
+  EXPECT_NE(read_text(vc / "vcrit_runs.csv").find("4,500,ok,0,"), std::string::npos);
+  const std::size_t folders = count_entries(vc);
+
+  const auto again = run_coldspray(kVcrit, dir);
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("0 impacts simulated now"), std::string::npos) << again.output;
+  EXPECT_EQ(read_text(vc / "vcrit.csv"), table);  // runs_used and all else unchanged
+  EXPECT_EQ(count_entries(vc), folders);
+}
+
+TEST(CliStudies, VcritRejectsABadRange) {
+  const auto r = run_coldspray(
+      "vcrit --material al-ptw --diameters 4um --grid 1um/0.5um --vmin 900m/s --vmax 800m/s");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--vmax"), std::string::npos) << r.output;
+  const auto unit = run_coldspray("vcrit --material al-ptw --diameters 4kg --grid 1um/0.5um");
+  EXPECT_EQ(unit.status, 2) << unit.output;
+  EXPECT_NE(unit.output.find("--diameters"), std::string::npos) << unit.output;
+}
+
+const std::string kCalibration = std::string(COLDSPRAY_TEST_DATA) + "/cli/calibrate-tiny.yaml";
+
+// Every run of the tiny calibration bonds (pbcp > 5 %, cor < 0 at 3 ns): one class per size,
+// which is diagnosed, with the runs kept and exit status 0.
+TEST(CliStudies, CalibrateWritesRunsAndDiagnosesOneClass) {
+  const std::string dir = make_temp_dir();
+  const std::string command = "calibrate '" + kCalibration +
+                              "' --out cal --quiet --jobs 2 "
+                              "--threads-per-job 1";
+  const auto r = run_coldspray(command, dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("8 impacts, 8 run now (0 failed)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("one class only (4 bonded, 0 not bonded)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("not calibrated"), std::string::npos) << r.output;
+  const fs::path cal = fs::path(dir) / "cal";
+  const std::string runs = read_text(cal / "runs.csv");
+  EXPECT_EQ(runs.rfind("grid,size,diameter_um,velocity_ms,critical_energy,critical_energy_rate,"
+                       "status,cor,abp,pbcp,v_rest,y\n",
+                       0),
+            0u)
+      << runs;
+  EXPECT_NE(runs.find("1um/0.5um,6um,6,1000,3000,1000000000,ok,"), std::string::npos) << runs;
+  const std::string json = read_text(cal / "calibration.json");
+  EXPECT_NE(json.find("\"calibrated\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("one class only"), std::string::npos) << json;
+
+  const auto again = run_coldspray(command, dir);
+  EXPECT_NE(again.output.find("0 run now (0 failed), 8 finished before"), std::string::npos)
+      << again.output;
+}
+
+struct BadFile {
+  const char* name;
+  std::string from, to;  // a text edit of the tiny file
+  std::string expected;  // in the message
+};
+
+TEST(CliStudies, CalibrationFileErrorsNameLineAndKey) {
+  const std::string original = [] {
+    std::ifstream in(kCalibration);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  }();
+  const BadFile cases[] = {
+      {"unknown key", "end_time: 3 ns", "end_time: 3 ns\nend_tme: 4 ns",
+       "calib.yaml:7:1: key 'end_tme': unknown key"},
+      {"bad unit", "to: 3000 J/m^2,", "to: 3000 m/s,",
+       "calib.yaml:11:42: key 'parameters.critical_energy.to'"},
+      {"missing sizes",
+       "sizes:\n  - {diameter: 4 um, velocity: 1000 m/s}\n  - {diameter: 6 um, velocity: 1000 "
+       "m/s}\n",
+       "", "key 'sizes'"},
+      {"bad grid", "grid: 1um/0.5um", "grid: 1um", "calib.yaml:5:7: key 'grid'"},
+      {"bad transform", "[identity, log10]", "[identity, log]", "key 'fit.transform'"},
+      {"wrong model", "model: energy", "model: strain", "key 'parameters.critical_strain'"},
+  };
+  for (const BadFile& bad : cases) {
+    const std::string dir = make_temp_dir();
+    std::string text = original;
+    const auto at = text.find(bad.from);
+    ASSERT_NE(at, std::string::npos) << bad.name;
+    text.replace(at, bad.from.size(), bad.to);
+    std::ofstream(fs::path(dir) / "calib.yaml") << text;
+    const auto r = run_coldspray("calibrate calib.yaml", dir);
+    EXPECT_EQ(r.status, 2) << bad.name << "\n" << r.output;
+    EXPECT_NE(r.output.find(bad.expected), std::string::npos) << bad.name << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(fs::path(dir) / "out")) << bad.name;
+  }
+}
+
+}  // namespace
+}  // namespace coldspray::cli
