@@ -21,13 +21,22 @@ double point_area(const mpm::State& s, std::size_t p) {
   return 2.0 * std::numbers::pi * r * std::sqrt(V / (2.0 * std::numbers::pi * r));
 }
 
+// The factor from the modelled part of a body to the whole: 2 per symmetry plane it was cut at
+// in 3D (a quarter model counts 4); an r-z point already stands for its whole ring.
+double whole_body_factor(const mpm::State& s, const mpm::BodyRange& r) {
+  if (s.geometry == case_file::Geometry::Axisymmetric) return 1.0;
+  double factor = 1.0;
+  for (const auto& plane : r.mirror_plane)
+    if (plane) factor *= 2.0;
+  return factor;
+}
+
 }  // namespace
 
 ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
   const mpm::Points& P = s.points;
   const mpm::BodyRange& r = s.bodies[body];
   const case_file::ImpactMetrics& limits = s.impact_metrics;
-  const bool axisymmetric = s.geometry == case_file::Geometry::Axisymmetric;
   ImpactMeasures m;
   m.moving = r.initial_velocity[2] != 0.0;
 
@@ -41,10 +50,10 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
     plastic += P.plastic_work[p];
     top = std::max(top, P.initial_z[p]);
   }
-  if (axisymmetric)
-    centroid[0] = centroid[1] = 0.0;  // the axis is r = 0
-  else
-    for (double& c : centroid) c /= mass;
+  // The impact axis: the vertical through the body's centroid, which lies on a symmetry plane it
+  // was cut at (in r-z, the axis r = 0).
+  for (int d = 0; d < 2; ++d)
+    centroid[d] = r.mirror_plane[d] ? *r.mirror_plane[d] : centroid[d] / mass;
   m.cor = m.moving ? -(momentum_z / mass) / r.initial_velocity[2] : kNaN;
   m.plastic_energy_density = plastic / volume0;
 
@@ -78,6 +87,8 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
     }
   }
   m.v_rest = rest_mass > 0.0 ? rest_momentum / rest_mass : kNaN;
+  m.contact_area *= whole_body_factor(s, r);
+  m.bonded_area *= whole_body_factor(s, r);
   m.jetted_fraction = jetted / mass;
   m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
@@ -19,16 +20,18 @@ namespace {
 
 using case_file::Vec3;
 
-// A body's diameter across the impact axis at t = 0: the x extent of its points plus one spacing
-// (in r-z, twice the largest radius plus one spacing), for the flattening ratio.
+// A body's diameter across the impact axis at t = 0, for the flattening ratio: the x extent of
+// its points plus one spacing, the points mirrored at a symmetry plane normal to x if it was cut
+// there (in r-z, twice the largest radius plus one spacing).
 double lateral_diameter(const std::vector<Vec3>& points, double spacing,
-                        case_file::Geometry geometry) {
+                        std::optional<double> mirror_plane) {
   double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
   for (const Vec3& x : points) {
     lo = std::min(lo, x[0]);
     hi = std::max(hi, x[0]);
   }
-  return geometry == case_file::Geometry::Axisymmetric ? 2.0 * hi + spacing : hi - lo + spacing;
+  if (mirror_plane) return 2.0 * std::max(hi - *mirror_plane, *mirror_plane - lo) + spacing;
+  return hi - lo + spacing;
 }
 
 std::string body_key(const case_file::Body& b, const char* field) {
@@ -39,6 +42,7 @@ struct Seeded {
   geometry::SeededPoints points;
   double spacing = 0.0;
   Vec3 min, max;  // bounds of the points' domains (position +- spacing/2)
+  std::array<std::optional<double>, 2> mirror_plane;  // see BodyRange::mirror_plane
 };
 
 // Places the grid. The domain is grid.min..grid.max, or the bodies' bounds plus a margin, with
@@ -111,8 +115,10 @@ void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
         const int axis = static_cast<int>(face) / 2;
         if (g.nodes[axis] == 1) continue;
         const bool at_max = static_cast<int>(face) % 2 == 1;
-        inside =
-            inside && (at_max ? x[axis] <= g.extent(axis) - g.h : x[axis] >= g.origin[axis] + g.h);
+        const double plane = at_max ? g.extent(axis) - g.h : g.origin[axis] + g.h;
+        if (at_max ? x[axis] <= plane : x[axis] >= plane) continue;
+        inside = false;
+        if (axis < 2) sd.mirror_plane[axis] = plane;
       }
       if (!inside) continue;
       kept.position.push_back(x);
@@ -274,8 +280,10 @@ State build_state(const case_file::Case& c) {
     BodyRange range{body.name, p, p + seeded[b].points.position.size(),
                     c.materials.at(body.material), body.spacing};
     range.initial_velocity = {body.velocity[0], body.velocity[1], body.velocity[2]};
+    range.mirror_plane = seeded[b].mirror_plane;
+    if (axi) range.mirror_plane[0] = 0.0;
     range.initial_diameter =
-        lateral_diameter(seeded[b].points.position, body.spacing, c.solver.geometry);
+        lateral_diameter(seeded[b].points.position, body.spacing, range.mirror_plane[0]);
     const materials::PointState initial =
         materials::initial_state(range.material, body.temperature);
     const double c0 = materials::wave_speed(range.material, initial);

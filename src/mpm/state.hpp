@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct BodyRange {
   double spacing = 0.0;
   std::array<double, 3> initial_velocity{};  // m/s
   double initial_diameter = 0.0;             // lateral extent at t = 0, m
+  // Where the body was cut by a symmetry plane normal to x or y (in r-z, x = r is cut at the
+  // axis r = 0): the whole body is the modelled part and its mirror image, so its centre lies on
+  // the plane and its areas are twice the modelled part's.
+  std::array<std::optional<double>, 2> mirror_plane{};
 };
 
 // A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give

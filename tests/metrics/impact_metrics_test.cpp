@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "mpm/contact.hpp"
 
@@ -82,6 +83,25 @@ TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
   EXPECT_TRUE(std::isnan(m.cor));
   EXPECT_FALSE(m.moving);
   EXPECT_FALSE(m.bonded);
+}
+
+// A quarter model (cut at x = 0 and y = 0): the axis is the planes' intersection, not the
+// quarter's centroid, and areas count four times.
+TEST(ImpactMetrics, AQuarterModelMeasuresTheWholeBody) {
+  mpm::State s = six_points();
+  s.bodies[0].mirror_plane = {0.0, 0.0};
+  const ImpactMeasures m = impact_measures(s, 0);
+  EXPECT_NEAR(m.contact_area, 4 * 5e-12, 1e-24);
+  EXPECT_NEAR(m.bonded_area, 4 * 3e-12, 1e-24);
+  // Non-jetted points reach |x| = 1.5 um from the axis x = 0: (2 * 1.5 + 1) / 4 um. About the
+  // centroid (x = 0.25 um) it would be (2 * 1.75 + 1) / 4.
+  EXPECT_NEAR(m.flattening_ratio, 1.0, 1e-12);
+  EXPECT_NEAR(m.jetted_fraction, 1.0 / 6.0, 1e-15);
+  // r-z: the ring already is the whole body.
+  s.geometry = case_file::Geometry::Axisymmetric;
+  s.bodies[0].mirror_plane = {0.0, std::nullopt};
+  for (std::size_t p = 0; p < 6; ++p) s.points.position[0][p] = std::abs(s.points.position[0][p]);
+  EXPECT_NEAR(impact_measures(s, 0).flattening_ratio, 1.0, 1e-12);
 }
 
 // Eq 4.6 per body: sum D N / n_sp; eq 4.7: the mean of the two bodies.
