@@ -46,6 +46,7 @@ void print_results(const CalibrationFile& file, const std::vector<studies::GridR
         std::cout << fmt::format(" (nearest the rectangle's centre of {} crossings)",
                                  g.intersections.size());
       std::cout << "\n";
+      if (!g.diagnosis.empty()) std::cout << "    " << g.diagnosis << "\n";
     } else {
       std::cout << "  not calibrated: " << g.diagnosis << "\n";
     }

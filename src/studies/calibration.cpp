@@ -256,11 +256,17 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
     const PlaneGrid& frame = boundaries[0].grid;
     const Eigen::Vector2d centre =
         frame.from_plot(0.5 * (frame.to_plot({lo1, lo2}) + frame.to_plot({hi1, hi2})));
-    if (const auto nearest = nearest_intersection(points, centre, frame))
+    gr.closest = closest_approach(boundaries[0].curves, boundaries[1].curves, frame);
+    if (const auto nearest = nearest_intersection(points, centre, frame)) {
       gr.calibrated = std::array<double, 2>{nearest->point[0], nearest->point[1]};
-    else
-      gr.diagnosis =
-          "no intersection: the two sizes' boundaries do not cross inside the parameter rectangle";
+    } else if (gr.closest) {
+      gr.calibrated = std::array<double, 2>{gr.closest->midpoint[0], gr.closest->midpoint[1]};
+      gr.diagnosis = fmt::format(
+          "no intersection: the two sizes' boundaries do not cross inside the parameter "
+          "rectangle; they come within {:.3g} of its width, and the calibrated pair is the "
+          "midpoint of that closest approach, a compromise",
+          gr.closest->distance);
+    }
   }
 
   nlohmann::json j;
@@ -303,6 +309,17 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
     gj["calibrated"] = gr.calibrated ? nlohmann::json{{plan.x1.key, (*gr.calibrated)[0]},
                                                       {plan.x2.key, (*gr.calibrated)[1]}}
                                      : nlohmann::json();
+    const auto point_json = [&plan](const Eigen::Vector2d& x) {
+      return nlohmann::json{{plan.x1.key, x[0]}, {plan.x2.key, x[1]}};
+    };
+    gj["closest_approach"] =
+        gr.closest ? nlohmann::json{{"on_" + plan.sizes[0].label(), point_json(gr.closest->on_a)},
+                                    {"on_" + plan.sizes[1].label(), point_json(gr.closest->on_b)},
+                                    {"distance", gr.closest->distance}}
+                   : nlohmann::json();
+    gj["calibrated_by"] = !gr.calibrated             ? nlohmann::json()
+                          : gr.intersections.empty() ? nlohmann::json("closest approach")
+                                                     : nlohmann::json("intersection");
     gj["diagnosis"] = gr.diagnosis.empty() ? nlohmann::json() : nlohmann::json(gr.diagnosis);
     j["grids"].push_back(gj);
   }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "case/case.hpp"
+#include "studies/decision_boundary.hpp"
 #include "studies/logistic_regression.hpp"
 
 namespace coldspray::studies {
@@ -103,8 +104,11 @@ struct GridResult {
   std::string grid;
   std::vector<SizeResult> sizes;
   std::vector<std::array<double, 2>> intersections;  // of the first two sizes' boundaries
-  std::optional<std::array<double, 2>> calibrated;   // the one nearest the rectangle's centre
-  std::string diagnosis;                             // why there is none, else empty
+  // The crossing nearest the rectangle's centre; when the boundaries do not cross, the midpoint
+  // of their closest approach, a compromise that says so in `diagnosis` (docs/studies-math.md).
+  std::optional<std::array<double, 2>> calibrated;
+  std::optional<ClosestApproach> closest;  // of the two boundaries, when both exist
+  std::string diagnosis;                   // why there is no crossing, else empty
 };
 
 // Reads the runs on disk, classifies, fits, traces and intersects; writes DIR/runs.csv,

@@ -104,6 +104,11 @@ Eigen::Vector2d PlaneGrid::to_unit(const Eigen::Vector2d& x) const {
   return ((to_plot(x) - lo).array() / (hi - lo).array()).matrix();
 }
 
+Eigen::Vector2d PlaneGrid::from_unit(const Eigen::Vector2d& u) const {
+  const Eigen::Vector2d lo = to_plot({x1_min, x2_min}), hi = to_plot({x1_max, x2_max});
+  return from_plot(lo + u.cwiseProduct(hi - lo));
+}
+
 void PlaneGrid::validate() const {
   if (nodes < 2) throw std::invalid_argument("boundary grid: nodes must be >= 2");
   if (!(x1_min < x1_max) || !(x2_min < x2_max) || !std::isfinite(x1_min) ||
@@ -260,6 +265,72 @@ std::optional<Intersection> nearest_intersection(const std::vector<Intersection>
 std::optional<Intersection> first_intersection(const std::vector<Intersection>& points) {
   if (points.empty()) return std::nullopt;
   return points.front();
+}
+
+namespace {
+
+// The point of segment [p, q] nearest x (all in the same coordinates).
+Eigen::Vector2d nearest_on_segment(const Eigen::Vector2d& x, const Eigen::Vector2d& p,
+                                   const Eigen::Vector2d& q) {
+  const Eigen::Vector2d d = q - p;
+  const double length2 = d.squaredNorm();
+  if (length2 == 0.0) return p;
+  return p + std::clamp((x - p).dot(d) / length2, 0.0, 1.0) * d;
+}
+
+struct SegmentPair {
+  Eigen::Vector2d on_a, on_b;  // unit-square coordinates
+  double distance = 0.0;
+};
+
+// Two segments in the unit square: a crossing if they cross, else the nearest pair, which then
+// has an end point of one of them as one of its points.
+SegmentPair nearest_points(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1,
+                           const Eigen::Vector2d& b0, const Eigen::Vector2d& b1) {
+  const Eigen::Vector2d r = a1 - a0, s = b1 - b0;
+  const double denom = cross(r, s);
+  if (denom != 0.0) {
+    const double t = cross(b0 - a0, s) / denom, u = cross(b0 - a0, r) / denom;
+    if (t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0) {
+      const Eigen::Vector2d x = a0 + t * r;
+      return {x, x, 0.0};
+    }
+  }
+  SegmentPair best{a0, nearest_on_segment(a0, b0, b1), 0.0};
+  best.distance = (best.on_a - best.on_b).norm();
+  auto consider = [&best](const Eigen::Vector2d& on_a, const Eigen::Vector2d& on_b) {
+    const double d = (on_a - on_b).norm();
+    if (d < best.distance) best = {on_a, on_b, d};
+  };
+  consider(a1, nearest_on_segment(a1, b0, b1));
+  consider(nearest_on_segment(b0, a0, a1), b0);
+  consider(nearest_on_segment(b1, a0, a1), b1);
+  return best;
+}
+
+}  // namespace
+
+std::optional<ClosestApproach> closest_approach(const std::vector<Polyline>& a,
+                                                const std::vector<Polyline>& b,
+                                                const PlaneGrid& frame) {
+  auto to_unit = [&frame](const std::vector<Polyline>& curves) {
+    std::vector<std::vector<Eigen::Vector2d>> u(curves.size());
+    for (std::size_t k = 0; k < curves.size(); ++k)
+      for (const Eigen::Vector2d& x : curves[k]) u[k].push_back(frame.to_unit(x));
+    return u;
+  };
+  const auto ua = to_unit(a), ub = to_unit(b);
+  std::optional<SegmentPair> best;
+  for (const auto& ca : ua)
+    for (std::size_t i = 0; i + 1 < ca.size(); ++i)
+      for (const auto& cb : ub)
+        for (std::size_t j = 0; j + 1 < cb.size(); ++j) {
+          const SegmentPair p = nearest_points(ca[i], ca[i + 1], cb[j], cb[j + 1]);
+          if (!best || p.distance < best->distance) best = p;
+        }
+  if (!best) return std::nullopt;
+  return ClosestApproach{frame.from_unit(best->on_a), frame.from_unit(best->on_b),
+                         frame.from_unit(0.5 * (best->on_a + best->on_b)), best->distance};
 }
 
 void write_boundary_csv(std::ostream& out, const Boundary& b) {

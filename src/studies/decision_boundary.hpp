@@ -32,6 +32,7 @@ struct PlaneGrid {
   Eigen::Vector2d from_plot(const Eigen::Vector2d& p) const;  // back to input units
   // Plot coordinates rescaled so that the rectangle is the unit square.
   Eigen::Vector2d to_unit(const Eigen::Vector2d& x) const;
+  Eigen::Vector2d from_unit(const Eigen::Vector2d& u) const;  // back to input units
   void validate() const;  // throws std::invalid_argument for an empty or unloggable rectangle
 };
 
@@ -84,6 +85,18 @@ std::optional<Intersection> nearest_intersection(const std::vector<Intersection>
                                                  const PlaneGrid& frame);
 // The first crossing in the order of intersect_boundaries; nullopt when there is none.
 std::optional<Intersection> first_intersection(const std::vector<Intersection>& points);
+
+// Where two sets of curves come closest: a point on each and the distance between them in
+// `frame`'s unit square. When the curves cross, the distance is 0 and both points are a crossing.
+// The midpoint (taken in plot coordinates) is the calibration's compromise when two sizes'
+// boundaries do not cross (docs/studies-math.md). nullopt when either set has no segment.
+struct ClosestApproach {
+  Eigen::Vector2d on_a, on_b, midpoint;  // input units
+  double distance = 0.0;                 // in the frame's unit square
+};
+std::optional<ClosestApproach> closest_approach(const std::vector<Polyline>& a,
+                                                const std::vector<Polyline>& b,
+                                                const PlaneGrid& frame);
 
 // CSV with header `x1,x2,curve`, one row per point, curve = index into b.curves, for plotting.
 void write_boundary_csv(std::ostream& out, const Boundary& b);

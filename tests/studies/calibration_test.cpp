@@ -1,10 +1,17 @@
 // The calibration's pieces that are not already the math's: classification by tolerances (thesis
-// eqs 4.8-4.9, §5.1.2), parameter grids with linear and log spacing, and the run folders.
+// eqs 4.8-4.9, §5.1.2), parameter grids with linear and log spacing, the run folders, and the
+// analysis of runs on disk: the calibrated pair where two sizes' boundaries cross or, where they
+// do not, at the midpoint of their closest approach.
 #include "studies/calibration.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
 
 namespace coldspray::studies {
 namespace {
@@ -62,6 +69,79 @@ TEST(CalibrationRuns, OneFolderPerGridSizeAndParameters) {
   EXPECT_EQ(runs.back().folder, "out/1um-0.25um/30um-v770ms/p3000_1e+09");
   EXPECT_EQ(runs.back().grid, 1u);
   EXPECT_EQ(runs.back().size, 1u);
+}
+
+// Writes, for every run of `plan`, the summary.json of a particle that sticks (cor 0, pbcp 50 %)
+// where bonds(size, x1, x2), and rebounds (cor 0.04, pbcp 0) elsewhere; analyses the runs.
+std::vector<GridResult> analyse_synthetic(
+    const CalibrationPlan& plan, const std::function<bool(std::size_t, double, double)>& bonds,
+    const std::string& tag, std::string* json = nullptr) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("coldspray_calibration_" + tag + "_" +
+       std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::remove_all(dir);
+  for (const CalibrationRun& run : calibration_runs(plan, dir)) {
+    std::filesystem::create_directories(run.folder);
+    const bool stuck = bonds(run.size, run.x1, run.x2);
+    std::ofstream(run.folder / "summary.json")
+        << R"({"status": "ok", "bodies": {"particle": {"cor": )" << (stuck ? 0.0 : 0.04)
+        << R"(, "abp": 1, "pbcp": )" << (stuck ? 50.0 : 0.0) << R"(, "v_rest": 0}}})";
+  }
+  const std::vector<GridResult> results = analyse_calibration(plan, dir, tag);
+  if (json) {
+    std::ifstream in(dir / "calibration.json");
+    *json = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  std::filesystem::remove_all(dir);
+  return results;
+}
+
+CalibrationPlan unit_square_plan() {
+  CalibrationPlan plan;
+  plan.grids = {"1um/0.25um"};
+  plan.sizes = {{14e-6, 810.0, {}}, {30e-6, 770.0, {}}};
+  plan.x1 = {"critical_energy", "J/m^2", 0.0, 1.0, 9, false};
+  plan.x2 = {"critical_energy_rate", "J/m^2/s", 0.0, 1.0, 9, false};
+  return plan;
+}
+
+// Size 0 bonds below the line x2 = x1, size 1 below x2 = 1 - x1: they cross at (0.5, 0.5).
+TEST(CalibrationAnalysis, CrossingBoundariesGiveTheIntersection) {
+  std::string json;
+  const auto results = analyse_synthetic(
+      unit_square_plan(),
+      [](std::size_t size, double x1, double x2) { return size == 0 ? x2 < x1 : x2 < 1.0 - x1; },
+      "cross", &json);
+  ASSERT_EQ(results.size(), 1u);
+  ASSERT_TRUE(results[0].calibrated.has_value()) << results[0].diagnosis;
+  EXPECT_NEAR((*results[0].calibrated)[0], 0.5, 0.07);  // half a parameter step
+  EXPECT_NEAR((*results[0].calibrated)[1], 0.5, 0.07);
+  EXPECT_EQ(results[0].intersections.size(), 1u);
+  EXPECT_TRUE(results[0].diagnosis.empty());
+  EXPECT_NE(json.find(R"("calibrated_by": "intersection")"), std::string::npos) << json;
+}
+
+// Size 0 bonds for x1 < 0.3, size 1 for x1 < 0.7: parallel boundaries near x1 = 0.31 and 0.69
+// (midway between the last bonded and first not bonded runs), no crossing; the compromise is
+// their closest approach's midpoint, x1 = 0.5.
+TEST(CalibrationAnalysis, ParallelBoundariesGiveTheClosestApproachMidpoint) {
+  std::string json;
+  const auto results = analyse_synthetic(
+      unit_square_plan(),
+      [](std::size_t size, double x1, double) { return x1 < (size == 0 ? 0.3 : 0.7); }, "apart",
+      &json);
+  ASSERT_EQ(results.size(), 1u);
+  const GridResult& g = results[0];
+  EXPECT_TRUE(g.intersections.empty());
+  ASSERT_TRUE(g.closest.has_value());
+  EXPECT_NEAR(g.closest->on_a[0], 0.3125, 0.03);
+  EXPECT_NEAR(g.closest->on_b[0], 0.6875, 0.03);
+  EXPECT_NEAR(g.closest->distance, 0.375, 0.05);
+  ASSERT_TRUE(g.calibrated.has_value());
+  EXPECT_NEAR((*g.calibrated)[0], 0.5, 0.02);
+  EXPECT_NE(g.diagnosis.find("closest approach"), std::string::npos) << g.diagnosis;
+  EXPECT_NE(json.find(R"("calibrated_by": "closest approach")"), std::string::npos) << json;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -62,13 +63,12 @@ TEST(StudiesBoundary, ALinearFunctionIsTracedExactly) {
 }
 
 TEST(StudiesBoundary, LogAxisInterpolatesInLog10) {
-  PlaneGrid g;
-  g.x1_min = 100.0;
-  g.x1_max = 5000.0;
-  g.x2_min = 1e5;
-  g.x2_max = 1e8;
-  g.nodes = 21;
-  g.scale2 = AxisScale::Log10;
+  const PlaneGrid g{.x1_min = 100.0,
+                    .x1_max = 5000.0,
+                    .x2_min = 1e5,
+                    .x2_max = 1e8,
+                    .nodes = 21,
+                    .scale2 = AxisScale::Log10};
   // Zero at Gdot = 10^(6.3 + 1e-4 G): linear in log10 Gdot, so exact on this grid.
   const Boundary b =
       trace_zero_contour([](double x1, double x2) { return std::log10(x2) - 6.3 - 1e-4 * x1; }, g);
@@ -173,6 +173,50 @@ TEST(StudiesBoundary, PolylineCrossingsAreExactAndCountedOnceAtVertices) {
   EXPECT_EQ(hits[1].segment_b, 1u);
   // Parallel and disjoint curves do not cross.
   EXPECT_TRUE(intersect_polylines({{{0.0, 2.0}, {1.0, 2.0}}}, {box}, frame).empty());
+}
+
+// Hand-worked: the unit circle and the line x2 = 2 in the square [-4, 4]^2 come closest at
+// (0, 1) and (0, 2), distance 1 = 1/8 of the square's side; the midpoint is (0, 1.5). A line
+// through the circle gives distance 0 at a crossing.
+TEST(StudiesBoundary, ClosestApproachOfDisjointAndCrossingCurves) {
+  const PlaneGrid frame = square(4.0, 2);
+  Polyline ring;
+  for (int k = 0; k <= 720; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / 720.0;
+    ring.push_back({std::sin(t), std::cos(t)});  // starts at the top, (0, 1), a vertex
+  }
+  const Polyline above = {{-3.0, 2.0}, {3.0, 2.0}};
+  const auto c = closest_approach({above}, {ring}, frame);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NEAR(c->distance, 1.0 / 8.0, 1e-12);
+  EXPECT_NEAR(c->on_a(0), 0.0, 1e-12);
+  EXPECT_NEAR(c->on_a(1), 2.0, 1e-12);
+  EXPECT_NEAR(c->on_b(1), 1.0, 1e-12);
+  EXPECT_NEAR(c->midpoint(0), 0.0, 1e-12);
+  EXPECT_NEAR(c->midpoint(1), 1.5, 1e-12);
+
+  const Polyline through = {{-3.0, 0.5}, {3.0, 0.5}};
+  const auto x = closest_approach({through}, {ring}, frame);
+  ASSERT_TRUE(x.has_value());
+  EXPECT_EQ(x->distance, 0.0);
+  EXPECT_NEAR(std::abs(x->midpoint(0)), std::sqrt(0.75), 1e-4);  // a chord vertex is within
+  EXPECT_NEAR(x->midpoint(1), 0.5, 1e-12);                       // 2 pi / 720 of the circle
+  EXPECT_FALSE(closest_approach({}, {ring}, frame).has_value());
+}
+
+// In log10 plot coordinates the midpoint is the geometric mean.
+TEST(StudiesBoundary, ClosestApproachMidpointIsTakenInPlotCoordinates) {
+  const PlaneGrid frame{.x1_min = 1.0,
+                        .x1_max = 1e4,
+                        .x2_min = 1.0,
+                        .x2_max = 1e4,
+                        .scale1 = AxisScale::Log10,
+                        .scale2 = AxisScale::Log10};
+  const auto c =
+      closest_approach({{{10.0, 1.0}, {10.0, 1e4}}}, {{{1000.0, 1.0}, {1000.0, 1e4}}}, frame);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NEAR(c->midpoint(0), 100.0, 1e-9);
+  EXPECT_NEAR(c->distance, 0.5, 1e-12);  // 2 decades of 4
 }
 
 TEST(StudiesBoundary, WritesTheCurvesAsCsv) {
