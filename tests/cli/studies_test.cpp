@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "cli/calibration_file.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -96,6 +97,24 @@ TEST(CliStudies, CalibrateWritesRunsAndDiagnosesOneClass) {
   const auto again = run_coldspray(command, dir);
   EXPECT_NE(again.output.find("0 run now (0 failed), 8 finished before"), std::string::npos)
       << again.output;
+}
+
+// The shipped calibration files read without error, and every run they would make is a valid
+// case (checked as `coldspray check` checks a case file), without running any.
+TEST(CliStudies, EveryExampleCalibrationMakesValidCases) {
+  const fs::path examples = fs::path(COLDSPRAY_SOURCE_DIR) / "examples" / "calibration";
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(examples)) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++files;
+    const CalibrationFile file = read_calibration_file(entry.path().string());
+    const auto runs = studies::calibration_runs(file.plan, "out");
+    EXPECT_EQ(runs.size(), file.plan.grids.size() * file.plan.sizes.size() *
+                               static_cast<std::size_t>(file.plan.x1.count * file.plan.x2.count))
+        << entry.path();
+    for (const auto& run : runs) EXPECT_NO_THROW(calibration_case(file, run)) << run.folder;
+  }
+  EXPECT_GE(files, 2);
 }
 
 struct BadFile {
