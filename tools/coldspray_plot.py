@@ -812,7 +812,9 @@ def command_calibration(options):
                         if c == 0 else None)
         if grid.get("calibrated"):
             p = grid["calibrated"]
-            ax.plot(p[keys[0]] * xscale, p[keys[1]] * yscale, "k*", ms=12,
+            marker = "*PXD"[g % 4]  # one per grid, so overlaid grids' points stay apart
+            ax.plot(p[keys[0]] * xscale, p[keys[1]] * yscale, "k" + marker,
+                    ms=12 if marker == "*" else 8,
                     label=f"calibrated ({grid['grid']})" if len(grids) > 1 else "calibrated")
     x = result["parameters"]["x1"]
     y = result["parameters"]["x2"]
