@@ -91,13 +91,6 @@ void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream
   if (substrate != s.bodies.end())
     out << fmt::format(", crater depth {:.3g} um", substrate->impact.crater_depth * 1e6);
   out << "\n";
-  // The metrics take a body's axis to be the vertical through its centroid, which for a quarter
-  // lies off the impact axis (docs/impact.md, "A quarter in 3D").
-  const auto xmin = c.grid.faces.find(case_file::GridFace::XMin);
-  if (c.solver.geometry == case_file::Geometry::ThreeD && xmin != c.grid.faces.end() &&
-      xmin->second != case_file::FaceCondition::Free)
-    out << "  (a symmetry-plane model: the jetted fraction is measured about the part's centroid, "
-           "not the impact axis)\n";
 }
 
 }  // namespace
