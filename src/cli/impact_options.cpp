@@ -47,8 +47,8 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
   sub.add_option("--bonding", o.bonding, "Bonding model (thesis Chapter 4)")
       ->check(CLI::IsMember({"none", "strain", "energy"}))
       ->capture_default_str();
-  sub.add_option("--Gc", o.gc, "Critical adhesion energy, e.g. 1503.74J/m^2 (eq 4.16b)");
-  sub.add_option("--Gc-rate", o.gc_rate, "Critical energy rate, e.g. 2.271J/m^2/us");
+  sub.add_option("--Gc", o.gc, "Critical adhesion energy, e.g. 400J/m^2 (eq 4.16b)");
+  sub.add_option("--Gc-rate", o.gc_rate, "Critical energy rate, e.g. 2.8e5J/m^2/us");
   sub.add_option("--eps-c", o.eps_c, "Critical strain (strain model, eq 4.4)");
   sub.add_option("--eps-c-rate", o.eps_c_rate, "Critical strain rate, e.g. '8.5e8 1/s'");
   sub.add_option("--floor", o.floor, "Lower bound of the rate factor of eqs 4.4 and 4.16b");

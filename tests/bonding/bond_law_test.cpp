@@ -9,9 +9,16 @@
 namespace coldspray::bonding {
 namespace {
 
+// The thesis' calibrated energy parameters (§5.1.4, rates per us) and its example strain ones
+// (§4.1.4), floor 0.1: the hand calculations below are written with them.
 BondLaw thesis_law(case_file::BondingModel model) {
-  case_file::Bonding b;  // the schema's defaults: the thesis' values, floor 0.1
+  case_file::Bonding b;
   b.model = model;
+  b.critical_energy = 1503.74;       // J/m^2
+  b.critical_energy_rate = 2.271e6;  // J/m^2/s
+  b.critical_strain = 1.4;
+  b.critical_strain_rate = 8.5e8;  // 1/s
+  b.floor = 0.1;
   return BondLaw::from_case(b, 0.7e-6);
 }
 
