@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,17 @@ double from_axis(double p, AxisScale s) { return s == AxisScale::Log10 ? std::po
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a(0) * b(1) - a(1) * b(0);
+}
+
+// Where the lines P + t r and Q + u s meet, as (t, u); nullopt for parallel (or degenerate)
+// segments, collinear ones included (docs/studies-math.md, Intersections).
+std::optional<std::array<double, 2>> crossing_parameters(const Eigen::Vector2d& P,
+                                                         const Eigen::Vector2d& r,
+                                                         const Eigen::Vector2d& Q,
+                                                         const Eigen::Vector2d& s) {
+  const double denom = cross(r, s);
+  if (std::abs(denom) <= 1e-14 * r.norm() * s.norm() || denom == 0.0) return std::nullopt;
+  return std::array<double, 2>{cross(Q - P, s) / denom, cross(Q - P, r) / denom};
 }
 
 // Grid edges: horizontal (i, j)-(i+1, j) has number 2 (j N + i), vertical (i, j)-(i, j+1) has
@@ -208,11 +220,9 @@ std::vector<Intersection> intersect_polylines(const std::vector<Polyline>& a,
         for (std::size_t sb = 0; sb + 1 < pb[cb].size(); ++sb) {
           const Eigen::Vector2d& Q = pb[cb][sb];
           const Eigen::Vector2d s = pb[cb][sb + 1] - Q;
-          const double denom = cross(r, s);
-          // Parallel (or degenerate) segments: no single crossing point.
-          if (std::abs(denom) <= 1e-14 * r.norm() * s.norm() || denom == 0.0) continue;
-          const double t = cross(Q - P, s) / denom;
-          const double u = cross(Q - P, r) / denom;
+          const auto tu = crossing_parameters(P, r, Q, s);
+          if (!tu) continue;  // parallel: no single crossing point
+          const auto [t, u] = *tu;
           if (t < -kSlack || t > 1.0 + kSlack || u < -kSlack || u > 1.0 + kSlack) continue;
           Candidate c;
           c.hit.point = frame.from_plot(P + std::clamp(t, 0.0, 1.0) * r);
@@ -284,13 +294,12 @@ struct SegmentPair {
 };
 
 // Two segments in the unit square: a crossing if they cross, else the nearest pair, which then
-// has an end point of one of them as one of its points.
+// has an end point of one of them as one of its points (also for parallel segments).
 SegmentPair nearest_points(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1,
                            const Eigen::Vector2d& b0, const Eigen::Vector2d& b1) {
-  const Eigen::Vector2d r = a1 - a0, s = b1 - b0;
-  const double denom = cross(r, s);
-  if (denom != 0.0) {
-    const double t = cross(b0 - a0, s) / denom, u = cross(b0 - a0, r) / denom;
+  const Eigen::Vector2d r = a1 - a0;
+  if (const auto tu = crossing_parameters(a0, r, b0, b1 - b0)) {
+    const auto [t, u] = *tu;
     if (t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0) {
       const Eigen::Vector2d x = a0 + t * r;
       return {x, x, 0.0};
