@@ -32,6 +32,7 @@ struct Options {
   int max_runs = 16;
   int jobs = 1;
   int threads_per_job = 0;
+  bool quiet = false;
 };
 
 // "14,18,22um" or "14um,18um": a unit after the last number applies to the bare ones before it.
@@ -83,6 +84,7 @@ void add_vcrit(CLI::App& app) {
   sub->add_option("--threads-per-job", opt->threads_per_job,
                   "OpenMP threads per impact (default: the cores shared among the jobs)")
       ->check(CLI::PositiveNumber);
+  sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt, sub] {
     studies::VcritOptions o;
     o.diameters = parse_diameters(opt->diameters);
@@ -95,12 +97,13 @@ void add_vcrit(CLI::App& app) {
     o.max_runs = opt->max_runs;
     o.jobs = opt->jobs;
     o.threads_per_job = opt->threads_per_job;
+    o.progress = !opt->quiet;
     o.out_dir = opt->out_dir.empty() ? "out/vcrit-" + opt->impact.material : opt->out_dir;
     const std::vector<case_file::Override> overrides = parse_overrides(opt->sets);
     const std::string command =
         command_line("coldspray impact", *sub,
                      {"--diameters", "--vmin", "--vmax", "--tol", "--max-runs", "--set", "--out",
-                      "--jobs", "--threads-per-job"});
+                      "--jobs", "--threads-per-job", "--quiet"});
     const studies::ImpactCaseMaker make_case = [&](double diameter, double speed) {
       const GeneratedCase g = impact_case(impact_spec(opt->impact, diameter, speed, command));
       return case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
@@ -118,6 +121,7 @@ void add_vcrit(CLI::App& app) {
       mpi.barrier();
       if (mpi.rank() != 0) return;
       o.ranks = 1;  // every run is on disk now: collect all the diameters' results
+      o.progress = false;
       rows = studies::find_critical_velocities(make_case, o);
     }
     studies::write_vcrit_csv(o.out_dir / "vcrit.csv", rows);

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <iostream>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -37,14 +40,71 @@ const nlohmann::json& particle(const nlohmann::json& s) {
   return s["bodies"]["particle"];
 }
 
+// The progress line of a search over several diameters: impacts done, the last outcome, and an
+// estimate of the time left from the bisection's run count per diameter.
+class Progress {
+ public:
+  Progress(const VcritOptions& o, std::size_t diameters)
+      : on_(o.progress),
+        per_diameter_(std::min<double>(
+            o.max_runs, 2.0 + std::ceil(std::log2(std::max((o.vmax - o.vmin) / o.tol, 1.0))))),
+        diameters_(diameters),
+        start_(std::chrono::steady_clock::now()) {}
+
+  void impact(double diameter, double speed, bool bonded, bool simulated) {
+    if (!on_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++impacts_;
+    if (simulated) ++simulated_;
+    line(fmt::format("d {} um at {} m/s {}", label(diameter / kUm), label(speed),
+                     bonded ? "bonded" : "not bonded"));
+  }
+
+  void diameter_done(int impacts) {
+    if (!on_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++settled_;
+    settled_impacts_ += static_cast<std::size_t>(impacts);
+    line("");
+  }
+
+  ~Progress() {
+    if (on_ && impacts_ > 0) std::cerr << "\n";
+  }
+
+ private:
+  void line(const std::string& last) {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    // The unsettled diameters' impacts still to come, at most per_diameter_ each.
+    const double left = std::max(0.0, per_diameter_ * static_cast<double>(diameters_ - settled_) -
+                                          static_cast<double>(impacts_ - settled_impacts_));
+    const std::string eta =
+        simulated_ > 0 ? fmt::format(", ETA ~{:.0f} s", elapsed / simulated_ * left) : "";
+    std::cerr << fmt::format("\rvcrit: {}/{} diameters, {} impacts ({} simulated){}{}{}      ",
+                             settled_, diameters_, impacts_, simulated_, eta,
+                             last.empty() ? "" : "; ", last)
+              << std::flush;
+  }
+
+  bool on_;
+  double per_diameter_;
+  std::size_t diameters_;
+  std::chrono::steady_clock::time_point start_;
+  std::mutex mutex_;
+  std::size_t impacts_ = 0, simulated_ = 0, settled_ = 0, settled_impacts_ = 0;
+};
+
 // One diameter's search, its runs in DIR/d<D>um/v<V>ms.
-VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double diameter) {
+VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double diameter,
+                Progress& progress) {
   VcritRow row;
   row.diameter = diameter;
   auto bonded = [&](double speed) {
     const fs::path folder = impact_folder(o.out_dir, diameter, speed);
     ++row.runs_used;
-    if (!case_finished(folder)) {
+    const bool simulate = !case_finished(folder);
+    if (simulate) {
       run_in_folder(folder, [&] { return make_case(diameter, speed); });
       ++row.simulated;
     }
@@ -52,7 +112,9 @@ VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double 
     const std::string status =
         s.is_object() ? s.value("status", std::string("no status")) : "unreadable summary";
     if (status != "ok") throw FailedRun(fmt::format("failed at {} m/s: {}", label(speed), status));
-    return s.contains("system") && s["system"].value("bonded", false);
+    const bool stuck = s.contains("system") && s["system"].value("bonded", false);
+    progress.impact(diameter, speed, stuck, simulate);
+    return stuck;
   };
   try {
     row.search = find_threshold(bonded, o.vmin, o.vmax, o.tol, o.max_runs, nullptr,
@@ -92,8 +154,10 @@ std::vector<VcritRow> find_critical_velocities(const ImpactCaseMaker& make_case,
     if (static_cast<int>(i % static_cast<std::size_t>(options.ranks)) == options.rank)
       mine.push_back(i);
   std::vector<VcritRow> rows(mine.size());
+  Progress progress(options, mine.size());
   run_parallel(mine.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
-    rows[k] = search(make_case, options, options.diameters[mine[k]]);
+    rows[k] = search(make_case, options, options.diameters[mine[k]], progress);
+    progress.diameter_done(rows[k].runs_used);
   });
   return rows;
 }

@@ -33,6 +33,7 @@ struct VcritOptions {
   int threads_per_job = 0;
   int rank = 0;  // this process searches the diameters i % ranks == rank
   int ranks = 1;
+  bool progress = false;  // a progress line on stderr after every impact
 };
 
 struct VcritRow {

@@ -49,11 +49,17 @@ TEST(CliStudies, VcritWritesItsTableAndReusesItsRuns) {
       << table;
   EXPECT_NE(table.find(",found\n"), std::string::npos) << table;
   EXPECT_NE(read_text(vc / "vcrit_runs.csv").find("4,500,ok,0,"), std::string::npos);
+  // The progress line: after every impact, and once the diameter is settled.
+  EXPECT_NE(first.output.find("vcrit: 0/1 diameters, 1 impacts (1 simulated)"), std::string::npos)
+      << first.output;
+  EXPECT_NE(first.output.find("d 4 um at 500 m/s not bonded"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("vcrit: 1/1 diameters"), std::string::npos) << first.output;
   const std::size_t folders = count_entries(vc);
 
-  const auto again = run_coldspray(kVcrit, dir);
+  const auto again = run_coldspray(kVcrit + " --quiet", dir);
   ASSERT_EQ(again.status, 0) << again.output;
   EXPECT_NE(again.output.find("0 impacts simulated now"), std::string::npos) << again.output;
+  EXPECT_EQ(again.output.find("vcrit: "), std::string::npos) << again.output;
   EXPECT_EQ(read_text(vc / "vcrit.csv"), table);  // runs_used and all else unchanged
   EXPECT_EQ(count_entries(vc), folders);
 }
