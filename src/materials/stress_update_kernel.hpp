@@ -31,39 +31,63 @@ PointState initial_point(const Models& models, double temperature) {
   return st;
 }
 
-template <class Models>
-void update_point(const Models& models, const StepKinematics& k, const UpdateOptions& opt,
-                  PointState& st) {
-  using Eigen::Matrix3d;
-  const Matrix3d I = Matrix3d::Identity();
-  const Matrix3d& W = k.spin_increment;
-  const Matrix3d& d = k.strain_increment;
-  const double rho = models.material.density / k.J_new;
+// Steps (1)-(4) of a point's update, up to the trial stress: what the return needs, and what
+// completes the step after it.
+struct ElasticTrial {
+  Eigen::Matrix3d s_rotated;        // deviator of sigma^n after the Jaumann rotation
+  Eigen::Matrix3d s;                // elastic trial deviator (eq A4)
+  double p_old = 0.0;               // p^n
+  double trial = 0.0;               // von Mises stress of s (eq A5)
+  double three_G = 0.0;             // 3G, G at T^n
+  strength::Conditions conditions;  // T^n, rho^{n+1}, G, Tm(rho^{n+1}): fixed in the step
+};
 
+template <class Models>
+ElasticTrial elastic_trial(const Models& models, const StepKinematics& k, const PointState& st) {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d& W = k.spin_increment;
+  const Eigen::Matrix3d& d = k.strain_increment;
+  const double rho = models.material.density / k.J_new;
+  ElasticTrial t;
   // (1) Jaumann rotation of sigma^n by the spin increment W dt (eq A2).
-  const Matrix3d rotated = st.stress + st.stress * W.transpose() + W * st.stress;
+  const Eigen::Matrix3d rotated = st.stress + st.stress * W.transpose() + W * st.stress;
   // (2) Pressure and deviator (eq A3); the trace is unchanged by (1), so this is p^n.
-  const double p_old = -rotated.trace() / 3.0;
-  const Matrix3d s_rotated = rotated + p_old * I;
+  t.p_old = -rotated.trace() / 3.0;
+  t.s_rotated = rotated + t.p_old * I;
   // (3) Elastic trial deviator (eqs A1.3, A4), G at T^n.
   const double G = models.shear_modulus_at(st.temperature);
-  Matrix3d s = s_rotated + 2.0 * G * (d - d.trace() / 3.0 * I);
+  t.s = t.s_rotated + 2.0 * G * (d - d.trace() / 3.0 * I);
   // (4) Trial von Mises stress (eq A5).
-  const double trial = von_mises(s);
-  // (5) Yield check at the rate floor and the consistent return (eqs A6-A8 with sigma_y solved
-  // in the step), started from the last step's rate. Temperature is explicit: T^n throughout
-  // the step.
-  const strength::Conditions c{st.temperature, rho, G, models.melt_temperature_at(rho)};
-  const auto flow_stress = models.flow_stress_in_step(c);
+  t.trial = von_mises(t.s);
+  t.three_G = 3.0 * G;
+  // Temperature is explicit: T^n throughout the step.
+  t.conditions = {st.temperature, rho, G, models.melt_temperature_at(rho)};
+  return t;
+}
+
+// (5) The yield check at the rate floor and the consistent return (eqs A6-A8 with sigma_y solved
+// in the step), started from the last step's rate.
+template <class Models>
+PlasticIncrement plastic_increment(const Models& models, const StepKinematics& k,
+                                   const ElasticTrial& t, const PointState& st) {
+  const auto flow_stress = models.flow_stress_in_step(t.conditions);
   const double eqps = st.eqps;
-  const PlasticIncrement inc =
-      consistent_return(trial, 3.0 * G, st.eqps_rate * k.dt,
-                        [&](double x) { return flow_stress(eqps + x, x / k.dt); });
+  return consistent_return(t.trial, t.three_G, st.eqps_rate * k.dt,
+                           [&](double x) { return flow_stress(eqps + x, x / k.dt); });
+}
+
+// Steps (5)-(7) from the return's increment: the returned deviator, heating, energy and pressure.
+template <class Models>
+void complete_update(const Models& models, const StepKinematics& k, const UpdateOptions& opt,
+                     ElasticTrial& t, const PlasticIncrement& inc, PointState& st) {
+  const Eigen::Matrix3d& d = k.strain_increment;
+  const double rho = t.conditions.density;
+  Eigen::Matrix3d& s = t.s;
   const double flow = inc.flow_stress;
   const double d_eqps = inc.eqps_increment;
   st.eqps_rate = d_eqps / k.dt;
   if (d_eqps > 0.0) {
-    s *= flow / trial;  // eq A8
+    s *= flow / t.trial;  // eq A8
     // (6) Adiabatic heating (eq 3.44) with the step's final flow stress.
     if (!opt.isothermal)
       st.temperature += adiabatic_temperature_rise(models.material.thermal, flow, d_eqps, rho);
@@ -74,18 +98,26 @@ void update_point(const Models& models, const StepKinematics& k, const UpdateOpt
   // the mid-step, then p^{n+1} solved implicitly with the energy it does.
   const double dJ = k.J_new - st.J;
   const double J_half = 0.5 * (st.J + k.J_new);
-  const double deviatoric_work = 0.5 * (s_rotated + s).cwiseProduct(d).sum();
-  const double energy_trial = st.energy + J_half * deviatoric_work - 0.5 * dJ * p_old;
+  const double deviatoric_work = 0.5 * (t.s_rotated + s).cwiseProduct(d).sum();
+  const double energy_trial = st.energy + J_half * deviatoric_work - 0.5 * dJ * t.p_old;
   const double B = models.energy_coefficient();
   const double p = (models.reference_pressure(k.J_new) + B * energy_trial) / (1.0 + 0.5 * B * dJ);
   st.energy = energy_trial - 0.5 * dJ * p;
 
-  st.stress = s - p * I;
+  st.stress = s - p * Eigen::Matrix3d::Identity();
   st.J = k.J_new;
   st.flow_stress = flow;
-  st.shear_modulus = G;
-  st.melt_temperature = c.melt_temperature;
+  st.shear_modulus = t.conditions.shear_modulus;
+  st.melt_temperature = t.conditions.melt_temperature;
   st.pressure = p;
+}
+
+template <class Models>
+void update_point(const Models& models, const StepKinematics& k, const UpdateOptions& opt,
+                  PointState& st) {
+  ElasticTrial t = elastic_trial(models, k, st);
+  const PlasticIncrement inc = plastic_increment(models, k, t, st);
+  complete_update(models, k, opt, t, inc, st);
 }
 
 template <class Models>

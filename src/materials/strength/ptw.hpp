@@ -21,15 +21,17 @@ inline constexpr double kPtwMinStrainRate = 1e-6;
 // Eq 2.8: the reciprocal time for a transverse wave to cross an atom,
 // xi_dot = (1/2) (4 pi rho / (3 M))^(1/3) (mu / rho)^(1/2). In SI (rho kg/m^3, M kg, mu Pa) the
 // result is in 1/s with no conversion factor (the thesis' code needed its um/us/ng/MPa set).
-// Returned as ln(gamma xi_dot), what eq 2.7 uses, from eq 2.8 raised to the sixth power,
+// Eq 2.7 uses ln(gamma xi_dot), taken from eq 2.8 raised to the sixth power,
 // (gamma xi_dot)^6 = gamma^6 (4 pi / (3 M))^2 mu^3 / (64 rho): one log where the direct form
 // takes a cube root, a square root and a log. (Al at rest: about 6e49, far from overflow.)
-inline double ptw_log_atomic_rate(const Ptw& p, double density, double shear_modulus) {
+inline double ptw_atomic_rate_sixth_power(const Ptw& p, double density, double shear_modulus) {
   const double g2 = p.gamma * p.gamma;
   const double k = 4.0 * std::numbers::pi / (3.0 * p.atomic_mass);
-  return std::log(g2 * g2 * g2 * k * k * shear_modulus * shear_modulus * shear_modulus /
-                  (64.0 * density)) /
-         6.0;
+  return g2 * g2 * g2 * k * k * shear_modulus * shear_modulus * shear_modulus / (64.0 * density);
+}
+
+inline double ptw_log_atomic_rate(const Ptw& p, double density, double shear_modulus) {
+  return std::log(ptw_atomic_rate_sixth_power(p, density, shear_modulus)) / 6.0;
 }
 
 // PTW within one step: the terms of eqs 2.7-2.8 that depend only on the step's conditions

@@ -1,0 +1,147 @@
+// Steps 9-11 of the MUSL step (thesis eqs 3.34-3.36, Appendix A): velocity gradient, density,
+// artificial viscosity, the material's stress update, then the position update and the checks
+// for faults. Declared in phases.hpp; instantiated here for each shape function and geometry.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "bonding/bond_law.hpp"
+#include "materials/model_dispatch.hpp"
+#include "materials/stress_update_lanes.hpp"
+#include "mpm/artificial_viscosity.hpp"
+#include "mpm/material_state.hpp"
+#include "mpm/phases.hpp"
+
+namespace coldspray::mpm {
+
+namespace {
+
+void check_point(const State& s, std::size_t p, Fault& fault) {
+  const Points& P = s.points;
+  const GridLayout& L = s.layout;
+  const char* cause = nullptr;
+  for (int d = 0; d < 3 && cause == nullptr; ++d)
+    if (!std::isfinite(P.position[d][p]) || !std::isfinite(P.velocity[d][p]) ||
+        !std::isfinite(P.stress[d][p]))
+      cause = "non-finite position, velocity or stress";
+  for (int d = 0; d < 3 && cause == nullptr; ++d) {
+    if (L.nodes[d] == 1) continue;
+    // The domain: inside the ghost layer (mpm/setup.cpp).
+    const double lo = L.origin[d] + L.h, hi = L.extent(d) - L.h;
+    if (P.position[d][p] < lo || P.position[d][p] > hi) cause = "left the grid";
+  }
+  if (L.axisymmetric && cause == nullptr && P.position[0][p] <= 0.0)
+    cause = "crossed the axis r = 0";
+  if (cause == nullptr) return;
+#pragma omp critical(coldspray_fault)
+  if (p < fault.point) {
+    fault.point = p;
+    fault.cause = cause;
+  }
+}
+
+}  // namespace
+
+// Steps 9-11 for one body (eqs 3.34-3.36, Appendix A), in batches of points that the material
+// update takes together (materials/stress_update_lanes.hpp). Batches start at fixed offsets from
+// the body's first point and a short last batch is padded with copies of its first point, so a
+// point's result depends neither on the thread count nor on its neighbours.
+template <class Shape, bool Axisymmetric>
+double update_body_stress(State& s, const BodyRange& body) {
+  using materials::kBatchPoints;
+  Points& P = s.points;
+  const double dt = s.dt;
+  const int b = static_cast<int>(&body - s.bodies.data());
+
+  // Eqs 3.34-3.36 and the artificial viscosity for point p: the step's kinematics.
+  auto kinematics_of = [&](std::size_t p) {
+    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    // L = sum_I v_I (x) grad N_I, with v_I = p_I / m_I of the point's body.
+    Eigen::Matrix3d L = Eigen::Matrix3d::Zero();
+    double radial_velocity = 0.0;
+    st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
+      const NodeView v = node_view(s, n, b);
+      const double grad[3] = {gx, gy, gz};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) L(i, j) += v.v[i] * grad[j];
+      radial_velocity += w * v.v[0];
+    });
+    // In r-z the hoop strain rate is v_r / r.
+    if constexpr (Axisymmetric) L(1, 1) = radial_velocity / P.position[0][p];
+
+    materials::StepKinematics k;
+    k.strain_increment = 0.5 * (L + L.transpose()) * dt;
+    k.spin_increment = 0.5 * (L - L.transpose()) * dt;
+    k.dt = dt;
+    k.J_new = P.J[p] * (1.0 + k.strain_increment.trace());  // eq 3.36
+
+    // Artificial bulk viscosity on the step's volumetric rate, and its work.
+    const double rho_new = body.material.density / k.J_new;
+    const double q =
+        bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], L.trace());
+    P.bulk_viscosity[p] = q;
+    P.viscous_work[p] -= q * L.trace() * dt * P.volume0[p] * k.J_new;
+    return k;
+  };
+
+  double max_speed = 0.0;
+  materials::visit_models(body.material, [&](const auto& models) {
+    // After the material update: the point's work, wave speed, bonding and position.
+    auto complete_point = [&](std::size_t p, const materials::StepKinematics& k,
+                              const materials::PointState& state) {
+      const double eqps_before = P.eqps[p];
+      store_point_state(state, P, p);
+      if (state.eqps > eqps_before)
+        P.plastic_work[p] +=
+            state.flow_stress * (state.eqps - eqps_before) * P.volume0[p] * state.J;
+      P.sound_speed[p] = materials::point_wave_speed(models, state);
+      // Eqs 4.5 / 4.16a: D_bond grows at surface points in contact (the set S).
+      if (P.touching[p]) {
+        P.touched[p] = 1;
+        const Eigen::Vector3d n(P.contact_normal[0][p], P.contact_normal[1][p],
+                                P.contact_normal[2][p]);
+        P.bond[p] +=
+            bonding::bond_increment(s.bond_law, state.stress, state.eqps - eqps_before, n, dt);
+      }
+      for (int d = 0; d < 3; ++d) {
+        P.position[d][p] += P.displacement[d][p];
+        P.half_width[d][p] *= 1.0 + k.strain_increment(d, d);
+      }
+      check_point(s, p, s.fault);
+      const double speed =
+          std::sqrt(P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
+                    P.velocity[2][p] * P.velocity[2][p]);
+      return P.sound_speed[p] + speed;
+    };
+
+    const long batches =
+        static_cast<long>((body.end - body.begin + kBatchPoints - 1) / kBatchPoints);
+#pragma omp parallel for schedule(static) reduction(max : max_speed)
+    for (long batch = 0; batch < batches; ++batch) {
+      const std::size_t first = body.begin + static_cast<std::size_t>(batch) * kBatchPoints;
+      const int count = static_cast<int>(std::min<std::size_t>(kBatchPoints, body.end - first));
+      materials::StepKinematics k[kBatchPoints];
+      materials::PointState state[kBatchPoints];
+      for (int i = 0; i < kBatchPoints; ++i) {
+        if (i < count) {
+          k[i] = kinematics_of(first + i);
+          state[i] = load_point_state(P, first + i);
+        } else {
+          k[i] = k[0];
+          state[i] = state[0];
+        }
+      }
+      materials::update_points(models, k, materials::UpdateOptions{}, state);
+      for (int i = 0; i < count; ++i)
+        max_speed = std::max(max_speed, complete_point(first + i, k[i], state[i]));
+    }
+  });
+  return max_speed;
+}
+
+template double update_body_stress<LinearShape, false>(State&, const BodyRange&);
+template double update_body_stress<LinearShape, true>(State&, const BodyRange&);
+template double update_body_stress<GimpShape, false>(State&, const BodyRange&);
+template double update_body_stress<GimpShape, true>(State&, const BodyRange&);
+
+}  // namespace coldspray::mpm
