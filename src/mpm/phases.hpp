@@ -267,20 +267,27 @@ inline NodeView node_view(const State& s, std::size_t n, int b) {
   return v;
 }
 
-// Step 7 (eq 3.32): point velocities from the nodal forces; the displacement from the nodal
-// velocities after contact, applied once the strain increment has used the old positions.
-// The work the contact corrections do on the point, m (v + dv/2) . dv_contact, is its share of
-// the step's kinetic-energy change: the contact term of the energy budget.
+// Steps 7-8 (eqs 3.32-3.33) in one pass over the points. Step 7: the point's velocity from the
+// nodal forces, and its displacement from the nodal velocities after contact, applied once the
+// strain increment has used the old positions. The work the contact corrections do on the point,
+// m (v + dv/2) . dv_contact, is its share of the step's kinetic-energy change: the contact term
+// of the energy budget. Step 8, the MUSL re-map: the nodal momenta again from the updated point
+// velocities, total and per body at contact nodes. A point's re-mapped momentum needs only its
+// own new velocity, so both steps share its stencil; the re-map fills the momentum arrays, which
+// step 7 does not read (it reads the velocities derived from them).
 template <class Shape, bool Axisymmetric>
-void update_point_velocities(State& s) {
+void update_point_velocities_and_remap(State& s) {
+  GridFields& g = s.grid;
+  ContactNodes& cn = s.contact;
   Points& P = s.points;
-  const long count = static_cast<long>(P.size());
+  for (auto& a : g.momentum) std::fill(a.begin(), a.end(), 0.0);
+  const std::size_t used = cn.size() * kMaxBodiesPerNode;
+  for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
-#pragma omp parallel for schedule(static)
-  for (long pi = 0; pi < count; ++pi) {
-    const auto p = static_cast<std::size_t>(pi);
+  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
     const auto st = stencil_at<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
+    const double m = P.mass[p];
     double dv[3] = {0, 0, 0}, v[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
       const NodeView node = node_view(s, n, b);
@@ -290,36 +297,20 @@ void update_point_velocities(State& s) {
         dv_contact[d] += w * node.dv_contact[d];
       }
     });
+    double v_new[3];
     for (int d = 0; d < 3; ++d) {
-      P.contact_work[p] += P.mass[p] * (P.velocity[d][p] + 0.5 * dv[d]) * dv_contact[d];
-      P.velocity[d][p] += dv[d];
+      P.contact_work[p] += m * (P.velocity[d][p] + 0.5 * dv[d]) * dv_contact[d];
+      v_new[d] = P.velocity[d][p] += dv[d];
       P.displacement[d][p] = v[d] * dt;
     }
-  }
-}
-
-// Step 8 (eq 3.33, the MUSL re-map): nodal momenta again from the updated point velocities,
-// total and per body at contact nodes.
-template <class Shape, bool Axisymmetric>
-void remap_momentum(State& s) {
-  GridFields& g = s.grid;
-  ContactNodes& cn = s.contact;
-  for (auto& a : g.momentum) std::fill(a.begin(), a.end(), 0.0);
-  const std::size_t used = cn.size() * kMaxBodiesPerNode;
-  for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
-  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
-    const Points& P = s.points;
-    const int b = P.body[p];
-    const double m = P.mass[p];
-    const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
-      for (int d = 0; d < 3; ++d) g.momentum[d][n] += w * m * v[d];
+      const double wm = w * m;
+      for (int d = 0; d < 3; ++d) g.momentum[d][n] += wm * v_new[d];
       const std::int32_t slot = g.contact_slot[n];
       if (slot < 0) return;
       // Every point near a contact node got its entry in map_bodies_to_contact_nodes.
       const std::size_t e = ContactNodes::flat(slot, cn.find(slot, b));
-      for (int d = 0; d < 3; ++d) cn.momentum[d][e] += w * m * v[d];
+      for (int d = 0; d < 3; ++d) cn.momentum[d][e] += wm * v_new[d];
     });
   });
 }

@@ -95,15 +95,14 @@ void musl_step(State& s) {
   gather_contact_points<Shape, Axisymmetric>(s);            //   surfaces, nodal D_bond (4.6)
   resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
                   s.contact_result);
-  mark_touching_points<Shape, Axisymmetric>(s);        //   the bonding set S (§4.1.1)
-  apply_node_constraints(s, /*force_too=*/true);       //   held nodes stay held
-  compute_nodal_velocities(s, /*with_forces=*/true);   //   v = p/m, dv = f dt/m
-  update_point_velocities<Shape, Axisymmetric>(s);     // step 7, eq 3.32
-  remap_momentum<Shape, Axisymmetric>(s);              // step 8, eq 3.33 (MUSL)
-  apply_node_constraints(s, /*force_too=*/false);      //   with the essential BCs
-  compute_nodal_velocities(s, /*with_forces=*/false);  //   v = p/m of the re-map
-  double max_speed = 0.0;                              // steps 9-11, eqs 3.34-3.36
-  for (const BodyRange& body : s.bodies)               //   and Appendix A
+  mark_touching_points<Shape, Axisymmetric>(s);               //   the bonding set S (§4.1.1)
+  apply_node_constraints(s, /*force_too=*/true);              //   held nodes stay held
+  compute_nodal_velocities(s, /*with_forces=*/true);          //   v = p/m, dv = f dt/m
+  update_point_velocities_and_remap<Shape, Axisymmetric>(s);  // steps 7-8, eqs 3.32-3.33
+  apply_node_constraints(s, /*force_too=*/false);             //   with the essential BCs
+  compute_nodal_velocities(s, /*with_forces=*/false);         //   v = p/m of the re-map
+  double max_speed = 0.0;                                     // steps 9-11, eqs 3.34-3.36
+  for (const BodyRange& body : s.bodies)                      //   and Appendix A
     max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
   s.max_signal_speed = max_speed;
   account_absorbed_work(s);
