@@ -92,8 +92,8 @@ using Model = std::variant<Linear, MieGruneisen>;
 
 // Adiabatic heating (thesis eq 3.44).
 struct Thermal {
-  double specific_heat = 0.0;    // C_p, J/(kg K)
-  double taylor_quinney = 0.9;   // chi, fraction of plastic work turned into heat
+  double specific_heat = 0.0;   // C_p, J/(kg K)
+  double taylor_quinney = 0.9;  // chi, fraction of plastic work turned into heat
 };
 
 struct Material {

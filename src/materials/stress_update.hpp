@@ -19,9 +19,12 @@ struct PointState {
   double temperature = 298.0;                        // K
   double energy = 0.0;  // internal energy per reference volume E, J/m^3 (eqs 3.39-3.41)
   double J = 1.0;       // V/V0 = rho0/rho
+  // G at `temperature`, Pa: set by initial_state and brought to the new temperature by every
+  // update, whose elastic trial and wave speed use it (so the shear-modulus model is evaluated
+  // once per step). A state must therefore come from initial_state or an earlier update.
+  double shear_modulus = 0.0;
   // Diagnostics of the last update, kept for output.
   double flow_stress = 0.0;       // Pa
-  double shear_modulus = 0.0;     // Pa
   double melt_temperature = 0.0;  // K
   double pressure = 0.0;          // Pa, compression positive
 };

@@ -12,11 +12,9 @@
 #include "materials/radial_return.hpp"
 #include "materials/strength/conditions.hpp"
 #include "materials/stress_update.hpp"
+#include "materials/symmetric_tensor.hpp"
 
 namespace coldspray::materials {
-
-// Eq A5 for a deviator s: sqrt(3/2 s:s).
-inline double von_mises(const Eigen::Matrix3d& s) { return std::sqrt(1.5 * s.squaredNorm()); }
 
 template <class Models>
 PointState initial_point(const Models& models, double temperature) {
@@ -31,37 +29,42 @@ PointState initial_point(const Models& models, double temperature) {
   return st;
 }
 
+// rho^{n+1} = rho0 / J^{n+1} (eq 3.36).
+template <class Models>
+double step_density(const Models& models, const StepKinematics& k) {
+  return models.material.density / k.J_new;
+}
+
 // Steps (1)-(4) of a point's update, up to the trial stress: what the return needs, and what
 // completes the step after it.
 struct ElasticTrial {
-  Eigen::Matrix3d s_rotated;        // deviator of sigma^n after the Jaumann rotation
-  Eigen::Matrix3d s;                // elastic trial deviator (eq A4)
+  SymmetricTensor s_rotated;        // deviator of sigma^n after the Jaumann rotation
+  SymmetricTensor s;                // elastic trial deviator (eq A4)
   double p_old = 0.0;               // p^n
   double trial = 0.0;               // von Mises stress of s (eq A5)
   double three_G = 0.0;             // 3G, G at T^n
   strength::Conditions conditions;  // T^n, rho^{n+1}, G, Tm(rho^{n+1}): fixed in the step
 };
 
+// G at T^n is the state's (kept by every update); Tm at rho^{n+1} is the caller's, so that a
+// batch of points can evaluate the melt model together (stress_update_lanes.hpp).
 template <class Models>
-ElasticTrial elastic_trial(const Models& models, const StepKinematics& k, const PointState& st) {
-  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  const Eigen::Matrix3d& W = k.spin_increment;
-  const Eigen::Matrix3d& d = k.strain_increment;
-  const double rho = models.material.density / k.J_new;
+ElasticTrial elastic_trial(const Models& models, const StepKinematics& k, const PointState& st,
+                           double melt_temperature) {
   ElasticTrial t;
   // (1) Jaumann rotation of sigma^n by the spin increment W dt (eq A2).
-  const Eigen::Matrix3d rotated = st.stress + st.stress * W.transpose() + W * st.stress;
+  const SymmetricTensor rotated = jaumann_rotated(SymmetricTensor::of(st.stress), k.spin_increment);
   // (2) Pressure and deviator (eq A3); the trace is unchanged by (1), so this is p^n.
   t.p_old = -rotated.trace() / 3.0;
-  t.s_rotated = rotated + t.p_old * I;
+  t.s_rotated = rotated.plus_identity(t.p_old);
   // (3) Elastic trial deviator (eqs A1.3, A4), G at T^n.
-  const double G = models.shear_modulus_at(st.temperature);
-  t.s = t.s_rotated + 2.0 * G * (d - d.trace() / 3.0 * I);
+  const double G = st.shear_modulus;
+  t.s = t.s_rotated.plus_scaled(2.0 * G, deviator(SymmetricTensor::of(k.strain_increment)));
   // (4) Trial von Mises stress (eq A5).
-  t.trial = von_mises(t.s);
+  t.trial = t.s.von_mises();
   t.three_G = 3.0 * G;
   // Temperature is explicit: T^n throughout the step.
-  t.conditions = {st.temperature, rho, G, models.melt_temperature_at(rho)};
+  t.conditions = {st.temperature, step_density(models, k), G, melt_temperature};
   return t;
 }
 
@@ -77,12 +80,12 @@ PlasticIncrement plastic_increment(const Models& models, const StepKinematics& k
 }
 
 // Steps (5)-(7) from the return's increment: the returned deviator, heating, energy and pressure.
+// The shear modulus is left at G(T^n); the caller brings it to the new temperature.
 template <class Models>
 void complete_update(const Models& models, const StepKinematics& k, const UpdateOptions& opt,
                      ElasticTrial& t, const PlasticIncrement& inc, PointState& st) {
-  const Eigen::Matrix3d& d = k.strain_increment;
   const double rho = t.conditions.density;
-  Eigen::Matrix3d& s = t.s;
+  SymmetricTensor& s = t.s;
   const double flow = inc.flow_stress;
   const double d_eqps = inc.eqps_increment;
   st.eqps_rate = d_eqps / k.dt;
@@ -98,16 +101,16 @@ void complete_update(const Models& models, const StepKinematics& k, const Update
   // the mid-step, then p^{n+1} solved implicitly with the energy it does.
   const double dJ = k.J_new - st.J;
   const double J_half = 0.5 * (st.J + k.J_new);
-  const double deviatoric_work = 0.5 * (t.s_rotated + s).cwiseProduct(d).sum();
+  const SymmetricTensor d = SymmetricTensor::of(k.strain_increment);
+  const double deviatoric_work = 0.5 * (t.s_rotated.contract(d) + s.contract(d));
   const double energy_trial = st.energy + J_half * deviatoric_work - 0.5 * dJ * t.p_old;
   const double B = models.energy_coefficient();
   const double p = (models.reference_pressure(k.J_new) + B * energy_trial) / (1.0 + 0.5 * B * dJ);
   st.energy = energy_trial - 0.5 * dJ * p;
 
-  st.stress = s - p * Eigen::Matrix3d::Identity();
+  st.stress = s.matrix_plus_identity(-p);
   st.J = k.J_new;
   st.flow_stress = flow;
-  st.shear_modulus = t.conditions.shear_modulus;
   st.melt_temperature = t.conditions.melt_temperature;
   st.pressure = p;
 }
@@ -115,15 +118,19 @@ void complete_update(const Models& models, const StepKinematics& k, const Update
 template <class Models>
 void update_point(const Models& models, const StepKinematics& k, const UpdateOptions& opt,
                   PointState& st) {
-  ElasticTrial t = elastic_trial(models, k, st);
+  ElasticTrial t =
+      elastic_trial(models, k, st, models.melt_temperature_at(step_density(models, k)));
   const PlasticIncrement inc = plastic_increment(models, k, t, st);
   complete_update(models, k, opt, t, inc, st);
+  // G at T^{n+1}, for the wave speed and the next step.
+  if (st.temperature != t.conditions.temperature)
+    st.shear_modulus = models.shear_modulus_at(st.temperature);
 }
 
 template <class Models>
 double point_wave_speed(const Models& models, const PointState& st) {
   const double rho = models.material.density / st.J;
-  const double G = models.shear_modulus_at(st.temperature);
+  const double G = st.shear_modulus;
   // K_t floored at zero: in deep tension the Gruneisen term can make it negative, and the
   // time-step bound then rests on the shear wave alone.
   const double K = std::max(models.tangent_bulk_modulus(st.J, st.energy), 0.0);

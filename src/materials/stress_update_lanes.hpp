@@ -1,13 +1,15 @@
 // update_point (stress_update_kernel.hpp) for a batch of four points, for solvers that loop over
 // arrays of points. Where the strength model has a four-lane flow stress (PTW) and the processor
-// runs AVX2, the four returns are solved together (radial_return_lanes.hpp); the steps before and
-// after the return stay per point. Otherwise each point takes update_point.
+// runs AVX2, the four returns are solved together (radial_return_lanes.hpp), and so are the melt
+// temperatures before them and the shear moduli after (condition_lanes.hpp); the rest of the
+// steps stays per point. Otherwise each point takes update_point.
 #pragma once
 
 #include "core/simd.hpp"
 #include "materials/stress_update_kernel.hpp"
 
 #if COLDSPRAY_HAVE_SIMD
+#include "materials/condition_lanes.hpp"
 #include "materials/radial_return_lanes.hpp"
 #include "materials/strength/ptw_lanes.hpp"
 #endif
@@ -29,11 +31,14 @@ template <class Models>
 COLDSPRAY_SIMD_TARGET void update_lanes(const Models& models,
                                         const StepKinematics (&k)[kBatchPoints],
                                         const UpdateOptions& opt, PointState (&st)[kBatchPoints]) {
+  simd::Doubles density;
+  for (int i = 0; i < kBatchPoints; ++i) density[i] = step_density(models, k[i]);
+  const simd::Doubles melt_temperature = melt_temperature_lanes(models, density);
   ElasticTrial t[kBatchPoints];
   strength::Conditions conditions[kBatchPoints];
   simd::Doubles trial, three_G, guess, eqps, dt;
   for (int i = 0; i < kBatchPoints; ++i) {
-    t[i] = elastic_trial(models, k[i], st[i]);
+    t[i] = elastic_trial(models, k[i], st[i], melt_temperature[i]);
     conditions[i] = t[i].conditions;
     trial[i] = t[i].trial;
     three_G[i] = t[i].three_G;
@@ -47,11 +52,18 @@ COLDSPRAY_SIMD_TARGET void update_lanes(const Models& models,
       trial, three_G, guess,
       [&](simd::Doubles x) COLDSPRAY_SIMD_TARGET { return flow_stress(eqps + x, x / dt); },
       [&](int i) { return plastic_increment(models, k[i], t[i], st[i]); }, inc);
+  simd::Doubles temperature;
+  for (int i = 0; i < kBatchPoints; ++i) {
+    complete_update(models, k[i], opt, t[i], inc[i], st[i]);
+    temperature[i] = st[i].temperature;
+  }
+  // G at T^{n+1}, for the wave speed and the next step.
+  const simd::Doubles G = shear_modulus_lanes(models, temperature);
+  for (int i = 0; i < kBatchPoints; ++i) st[i].shear_modulus = G[i];
   // Clear the upper halves of the vector registers before the scalar code: left set, they slow
   // every SSE instruction after them (measured: the next step's particle-to-grid mapping took
   // twice as long).
   __builtin_ia32_vzeroupper();
-  for (int i = 0; i < kBatchPoints; ++i) complete_update(models, k[i], opt, t[i], inc[i], st[i]);
 }
 #endif
 

@@ -1,7 +1,8 @@
 // The four-lane forms of the constitutive update against their scalar originals: PtwLanes
 // against PtwStep (and the hand-calculated al-ptw number of ptw_test.cpp), the lock-step return
 // against consistent_return on every path (elastic, warm secant, cold yielding and
-// non-converging lanes handed to the scalar return), and update_points against update_point.
+// non-converging lanes handed to the scalar return), the shear modulus and melt lanes against
+// their scalar models, and update_points against update_point.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -194,6 +195,66 @@ TEST(MaterialsLanes, BatchUpdateMatchesPointUpdates) {
   });
   EXPECT_GT(plastic, 50);
   EXPECT_GT(elastic, 10);
+}
+
+// The MTS shear modulus (eq 2.6) and the SCG melting temperature (eq 2.9) of four points at once
+// against the scalar models, across the temperatures and compressions of an impact, and the
+// floor of MTS at 1 % of mu0.
+COLDSPRAY_SIMD_TARGET void expect_condition_lanes_match(const Material& m) {
+  visit_models(m, [&](const auto& models) {
+    for (double T0 : {50.0, 298.0, 700.0, 5000.0, 1e6}) {
+      const simd::Doubles T = {T0, 1.5 * T0, 2.0 * T0, 3.0 * T0};
+      const simd::Doubles G = shear_modulus_lanes(models, T);
+      for (int l = 0; l < simd::kLanes; ++l) {
+        const double scalar = models.shear_modulus_at(T[l]);
+        EXPECT_NEAR(G[l], scalar, 1e-14 * scalar) << T[l];
+      }
+    }
+    for (double eta : {0.8, 1.0, 1.2, 1.6}) {
+      const simd::Doubles rho = simd::broadcast(m.density) * simd::Doubles{eta, 1.01, 0.99, 1.3};
+      const simd::Doubles Tm = melt_temperature_lanes(models, rho);
+      for (int l = 0; l < simd::kLanes; ++l) {
+        const double scalar = models.melt_temperature_at(rho[l]);
+        EXPECT_NEAR(Tm[l], scalar, 1e-14 * scalar) << rho[l];
+      }
+    }
+  });
+}
+
+TEST(MaterialsLanes, ShearModulusAndMeltLanesMatchTheScalarModels) {
+  if (!simd::available()) GTEST_SKIP() << "no AVX2 on this processor";
+  const Material al = testing::al_ptw();  // MTS and SCG
+  expect_condition_lanes_match(al);
+  // The floor: far above T0 eq 2.6 falls below 1 % of mu0.
+  visit_models(al,
+               [](const auto& models) { EXPECT_EQ(models.shear_modulus_at(1e6), 0.01 * 28.8e9); });
+  expect_condition_lanes_match(testing::cu_jc());  // constant models
+}
+
+// Every update leaves G at the state's new temperature, in the scalar and the batched form, so
+// that the next step and the wave speed need not evaluate the model again.
+TEST(MaterialsLanes, UpdatesKeepTheShearModulusAtTheNewTemperature) {
+  if (!simd::available()) GTEST_SKIP() << "no AVX2 on this processor";
+  const Material m = testing::al_ptw();
+  visit_models(m, [&](const auto& models) {
+    PointState batch[kBatchPoints], single = initial_point(models, 298.0);
+    for (auto& b : batch) b = single;
+    for (int step = 0; step < 30; ++step) {
+      StepKinematics k[kBatchPoints];
+      for (auto& ki : k) {
+        ki.strain_increment(0, 1) = ki.strain_increment(1, 0) = 2e-3;
+        ki.dt = 2e-11;
+      }
+      update_points(models, k, {}, batch);
+      update_point(models, k[0], {}, single);
+    }
+    EXPECT_GT(single.temperature, 310.0);
+    EXPECT_EQ(single.shear_modulus, models.shear_modulus_at(single.temperature));
+    for (const auto& b : batch) {
+      const double scalar = models.shear_modulus_at(b.temperature);
+      EXPECT_NEAR(b.shear_modulus, scalar, 1e-14 * scalar);
+    }
+  });
 }
 
 }  // namespace

@@ -1,0 +1,79 @@
+// Symmetric 3x3 tensors (stresses, strain increments) by their six independent components, in
+// the order xx, yy, zz, xy, yz, xz of mpm::Points' stress arrays. The constitutive update
+// (stress_update_kernel.hpp) works on its deviators in this form: no 3x3 products, and every
+// operation small enough to inline.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace coldspray::materials {
+
+struct SymmetricTensor {
+  double c[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+  // Component (i, j) of the full matrix.
+  static constexpr int index(int i, int j) {
+    constexpr int kIndex[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+    return kIndex[i][j];
+  }
+  double operator()(int i, int j) const { return c[index(i, j)]; }
+
+  // The upper triangle of a (symmetric) matrix.
+  static SymmetricTensor of(const Eigen::Matrix3d& a) {
+    return {{a(0, 0), a(1, 1), a(2, 2), a(0, 1), a(1, 2), a(0, 2)}};
+  }
+  // This tensor plus t times the identity, as a full matrix.
+  Eigen::Matrix3d matrix_plus_identity(double t) const {
+    Eigen::Matrix3d a;
+    a << c[0] + t, c[3], c[5],  //
+        c[3], c[1] + t, c[4],   //
+        c[5], c[4], c[2] + t;
+    return a;
+  }
+
+  double trace() const { return c[0] + c[1] + c[2]; }
+  // a : b = sum_ij a_ij b_ij, the off-diagonal components counted twice.
+  double contract(const SymmetricTensor& b) const {
+    return c[0] * b.c[0] + c[1] * b.c[1] + c[2] * b.c[2] +
+           2.0 * (c[3] * b.c[3] + c[4] * b.c[4] + c[5] * b.c[5]);
+  }
+  // Eq A5 for a deviator: sqrt(3/2 s:s).
+  double von_mises() const { return std::sqrt(1.5 * contract(*this)); }
+
+  // This tensor plus t times the identity.
+  SymmetricTensor plus_identity(double t) const {
+    return {{c[0] + t, c[1] + t, c[2] + t, c[3], c[4], c[5]}};
+  }
+  // This tensor plus f times b.
+  SymmetricTensor plus_scaled(double f, const SymmetricTensor& b) const {
+    SymmetricTensor r;
+    for (int n = 0; n < 6; ++n) r.c[n] = c[n] + f * b.c[n];
+    return r;
+  }
+  SymmetricTensor& operator*=(double f) {
+    for (double& v : c) v *= f;
+    return *this;
+  }
+};
+
+// The deviator a - tr(a)/3 I.
+inline SymmetricTensor deviator(const SymmetricTensor& a) {
+  return a.plus_identity(-a.trace() / 3.0);
+}
+
+// sigma + sigma W^T + W sigma for a spin increment W: the Jaumann rotation of eq A2. Symmetric
+// for a symmetric sigma and a skew W, so only the upper triangle is formed.
+inline SymmetricTensor jaumann_rotated(const SymmetricTensor& sigma, const Eigen::Matrix3d& W) {
+  constexpr int kRow[6] = {0, 1, 2, 0, 1, 0}, kColumn[6] = {0, 1, 2, 1, 2, 2};
+  SymmetricTensor r;
+  for (int n = 0; n < 6; ++n) {
+    const int i = kRow[n], j = kColumn[n];
+    double sum = sigma.c[n];
+    for (int k = 0; k < 3; ++k) sum += sigma(i, k) * W(j, k) + W(i, k) * sigma(k, j);
+    r.c[n] = sum;
+  }
+  return r;
+}
+
+}  // namespace coldspray::materials
