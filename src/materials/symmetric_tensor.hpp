@@ -62,18 +62,16 @@ inline SymmetricTensor deviator(const SymmetricTensor& a) {
   return a.plus_identity(-a.trace() / 3.0);
 }
 
-// sigma + sigma W^T + W sigma for a spin increment W: the Jaumann rotation of eq A2. Symmetric
-// for a symmetric sigma and a skew W, so only the upper triangle is formed.
+// sigma + sigma W^T + W sigma = sigma + W sigma + (W sigma)^T for a skew spin increment W: the
+// Jaumann rotation of eq A2, written out for the upper triangle (W's is all that is read).
 inline SymmetricTensor jaumann_rotated(const SymmetricTensor& sigma, const Eigen::Matrix3d& W) {
-  constexpr int kRow[6] = {0, 1, 2, 0, 1, 0}, kColumn[6] = {0, 1, 2, 1, 2, 2};
-  SymmetricTensor r;
-  for (int n = 0; n < 6; ++n) {
-    const int i = kRow[n], j = kColumn[n];
-    double sum = sigma.c[n];
-    for (int k = 0; k < 3; ++k) sum += sigma(i, k) * W(j, k) + W(i, k) * sigma(k, j);
-    r.c[n] = sum;
-  }
-  return r;
+  const double w01 = W(0, 1), w02 = W(0, 2), w12 = W(1, 2);
+  const auto& [xx, yy, zz, xy, yz, xz] = sigma.c;
+  return {{xx + 2.0 * (w01 * xy + w02 * xz),  //
+           yy + 2.0 * (w12 * yz - w01 * xy),  //
+           zz - 2.0 * (w02 * xz + w12 * yz),  //
+           xy + w01 * (yy - xx) + w02 * yz + w12 * xz, yz + w12 * (zz - yy) - w01 * xz - w02 * xy,
+           xz + w02 * (zz - xx) + w01 * yz - w12 * xy}};
 }
 
 }  // namespace coldspray::materials

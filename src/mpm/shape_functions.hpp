@@ -34,8 +34,10 @@ struct LinearShape {
 struct GimpShape {
   static constexpr int kSupport = 3;
   // The support of a node is |r| < 1 + a (r = xi - node, a = lp/h <= 1/2), so the three nodes
-  // around the nearest one cover every node with a non-zero weight.
-  static void evaluate(double xi, double a, double inv_h, Weights1D<3>& out) {
+  // around the nearest one cover every node with a non-zero weight. (Forced inline: GCC kept it
+  // a call, 3 % of an r-z step.)
+  [[gnu::always_inline]] static void evaluate(double xi, double a, double inv_h,
+                                              Weights1D<3>& out) {
     out.base = static_cast<int>(std::floor(xi + 0.5)) - 1;
     for (int n = 0; n < 3; ++n) {
       const double r = xi - (out.base + n);
