@@ -56,31 +56,36 @@ double update_body_stress(State& s, const BodyRange& body) {
   // Eqs 3.34-3.36 and the artificial viscosity for point p: the step's kinematics.
   auto kinematics_of = [&](std::size_t p) {
     const auto st = stencil_at<Shape, Axisymmetric>(s, p);
-    // L = sum_I v_I (x) grad N_I, with v_I = p_I / m_I of the point's body.
-    Eigen::Matrix3d L = Eigen::Matrix3d::Zero();
+    // L = sum_I v_I (x) grad N_I, with v_I = p_I / m_I of the point's body. (Plain scalars: kept
+    // in registers, where an Eigen matrix captured by the loop stayed on the stack.)
+    double L[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     double radial_velocity = 0.0;
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       const NodeView v = node_view(s, n, b);
       const double grad[3] = {gx, gy, gz};
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) L(i, j) += v.v[i] * grad[j];
+        for (int j = 0; j < 3; ++j) L[i][j] += v.v[i] * grad[j];
       radial_velocity += w * v.v[0];
     });
     // In r-z the hoop strain rate is v_r / r.
-    if constexpr (Axisymmetric) L(1, 1) = radial_velocity / P.position[0][p];
+    if constexpr (Axisymmetric) L[1][1] = radial_velocity / P.position[0][p];
 
     materials::StepKinematics k;
-    k.strain_increment = 0.5 * (L + L.transpose()) * dt;
-    k.spin_increment = 0.5 * (L - L.transpose()) * dt;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        k.strain_increment(i, j) = 0.5 * (L[i][j] + L[j][i]) * dt;
+        k.spin_increment(i, j) = 0.5 * (L[i][j] - L[j][i]) * dt;
+      }
     k.dt = dt;
     k.J_new = P.J[p] * (1.0 + k.strain_increment.trace());  // eq 3.36
 
     // Artificial bulk viscosity on the step's volumetric rate, and its work.
+    const double trace_L = L[0][0] + L[1][1] + L[2][2];
     const double rho_new = body.material.density / k.J_new;
     const double q =
-        bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], L.trace());
+        bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], trace_L);
     P.bulk_viscosity[p] = q;
-    P.viscous_work[p] -= q * L.trace() * dt * P.volume0[p] * k.J_new;
+    P.viscous_work[p] -= q * trace_L * dt * P.volume0[p] * k.J_new;
     return k;
   };
 
