@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "materials/stress_update.hpp"
 #include "mpm/state.hpp"
@@ -53,21 +54,22 @@ struct PointContribution {
   }
 };
 
+// Point p's stencil, as map_points_to_grid evaluated it this step.
 template <class Shape, bool Axisymmetric>
-Stencil<Shape, Axisymmetric> stencil_at(const State& s, std::size_t p) {
-  Stencil<Shape, Axisymmetric> st;
-  const Points& P = s.points;
-  st.evaluate(s.layout, P, p);
-  return st;
+const Stencil<Shape, Axisymmetric>& stencil_of(const State& s, std::size_t p) {
+  return std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils)[p];
 }
 
 // Steps 1-2 (eqs 3.23-3.27): nodal mass, momentum and force, summed over all bodies; and which
-// bodies reach each node, to find the contact nodes.
+// bodies reach each node, to find the contact nodes. Evaluates every point's stencil for the
+// step (State::stencils).
 template <class Shape, bool Axisymmetric>
 void map_points_to_grid(State& s) {
   GridFields& g = s.grid;
+  auto& stencils = std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils);
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    Stencil<Shape, Axisymmetric>& st = stencils[p];
+    st.evaluate(s.layout, s.points, p);
     const PointContribution<Axisymmetric> c(s, p);
     const int b = s.points.body[p];
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
@@ -107,7 +109,7 @@ void map_bodies_to_contact_nodes(State& s) {
   ContactNodes& cn = s.contact;
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
     if (!s.near_contact[cell_of(s, p)]) return;
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const PointContribution<Axisymmetric> c(s, p);
     const int b = s.points.body[p];
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
@@ -141,7 +143,7 @@ void gather_contact_points(State& s) {
   const Points& P = s.points;
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
     if (!s.near_contact[cell_of(s, p)]) return;
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
     st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
       const std::int32_t slot = s.grid.contact_slot[node];
@@ -186,7 +188,7 @@ void mark_touching_points(State& s) {
     const auto p = static_cast<std::size_t>(pi);
     P.touching[p] = 0;
     if (!P.surface[p] || cn.size() == 0 || !s.near_contact[cell_of(s, p)]) continue;
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
     double normal[3] = {0.0, 0.0, 0.0};
     st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
@@ -285,7 +287,7 @@ void update_point_velocities_and_remap(State& s) {
   for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
     const double m = P.mass[p];
     double dv[3] = {0, 0, 0}, v[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};

@@ -321,6 +321,9 @@ State build_state(const case_file::Case& c) {
     }
   }
 
+  with_discretisation(s, [&]<class Shape, bool Axisymmetric>() {
+    std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils).resize(total);
+  });
   s.slabs.order.resize(total);
   s.slabs.slab_of.resize(total);
   s.slabs.begin.resize(static_cast<std::size_t>(s.layout.nodes[2] / Slabs::kSlabCells) + 3);

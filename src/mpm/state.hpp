@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bonding/bond_law.hpp"
@@ -16,6 +17,7 @@
 #include "mpm/contact.hpp"
 #include "mpm/grid.hpp"
 #include "mpm/points.hpp"
+#include "mpm/stencil.hpp"
 
 namespace coldspray::mpm {
 
@@ -76,6 +78,12 @@ struct State {
   std::vector<AbsorbingPoint> absorbing;
   std::array<std::vector<double>, 3> external_force;  // per point, N (dashpots)
   Slabs slabs;
+  // Each point's stencil at the step's positions: evaluated once, by the particle-to-grid
+  // mapping, and read by every later phase of the step, as the points move only at its end
+  // (step 11). One vector per shape function and geometry; setup sizes the run's own.
+  std::tuple<std::vector<Stencil<LinearShape, false>>, std::vector<Stencil<LinearShape, true>>,
+             std::vector<Stencil<GimpShape, false>>, std::vector<Stencil<GimpShape, true>>>
+      stencils;
 
   ContactNodes contact;
   ContactRule contact_rule;
@@ -90,5 +98,17 @@ struct State {
   double mass_floor = 0.0;        // nodes lighter than this carry no velocity, kg
   Fault fault;
 };
+
+// Calls f.template operator()<Shape, Axisymmetric>() for the run's shape function and geometry:
+// where the solver's templates are chosen.
+template <class F>
+decltype(auto) with_discretisation(const State& s, F&& f) {
+  const bool axi = s.geometry == case_file::Geometry::Axisymmetric;
+  const bool gimp = s.shape_function == case_file::ShapeFunction::Gimp;
+  if (gimp && axi) return f.template operator()<GimpShape, true>();
+  if (gimp) return f.template operator()<GimpShape, false>();
+  if (axi) return f.template operator()<LinearShape, true>();
+  return f.template operator()<LinearShape, false>();
+}
 
 }  // namespace coldspray::mpm

@@ -114,16 +114,8 @@ void musl_step(State& s) {
 
 void step(State& s) {
   for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
-  const bool axi = s.geometry == case_file::Geometry::Axisymmetric;
-  const bool gimp = s.shape_function == case_file::ShapeFunction::Gimp;
-  if (gimp && axi)
-    musl_step<GimpShape, true>(s);
-  else if (gimp)
-    musl_step<GimpShape, false>(s);
-  else if (axi)
-    musl_step<LinearShape, true>(s);
-  else
-    musl_step<LinearShape, false>(s);
+  with_discretisation(s,
+                      [&]<class Shape, bool Axisymmetric>() { musl_step<Shape, Axisymmetric>(s); });
   if (s.fault.point != std::numeric_limits<std::size_t>::max()) {
     const std::size_t p = s.fault.point;
     const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),

@@ -55,7 +55,7 @@ double update_body_stress(State& s, const BodyRange& body) {
 
   // Eqs 3.34-3.36 and the artificial viscosity for point p: the step's kinematics.
   auto kinematics_of = [&](std::size_t p) {
-    const auto st = stencil_at<Shape, Axisymmetric>(s, p);
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     // L = sum_I v_I (x) grad N_I, with v_I = p_I / m_I of the point's body. (Plain scalars: kept
     // in registers, where an Eigen matrix captured by the loop stayed on the stack.)
     double L[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
