@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/symmetric_tensor.hpp"
+
 namespace coldspray::bonding {
 
 BondLaw BondLaw::from_case(const case_file::Bonding& b, double cell_size) {
@@ -21,7 +23,7 @@ double rate_factor(double ratio, double floor) { return std::max(1.0 - std::log(
 
 double shear_plastic_strain_increment(double d_eqps, const Eigen::Matrix3d& deviatoric_stress,
                                       const Eigen::Vector3d& n) {
-  const double von_mises = std::sqrt(1.5 * deviatoric_stress.squaredNorm());
+  const double von_mises = materials::von_mises_stress(deviatoric_stress);
   if (d_eqps <= 0.0 || von_mises == 0.0) return 0.0;
   const Eigen::Vector3d t = 1.5 * d_eqps / von_mises * (deviatoric_stress * n);
   return 2.0 / std::sqrt(3.0) * (t - t.dot(n) * n).norm();
@@ -48,7 +50,7 @@ double bond_increment(const BondLaw& law, const Eigen::Matrix3d& stress, double 
     case case_file::BondingModel::Strain:
       return strain_bond_increment(law, shear_plastic_strain_increment(d_eqps, deviator, n), dt);
     case case_file::BondingModel::Energy:
-      return energy_bond_increment(law, std::sqrt(1.5 * deviator.squaredNorm()), d_eqps, dt);
+      return energy_bond_increment(law, materials::von_mises_stress(stress), d_eqps, dt);
     case case_file::BondingModel::None:
       break;
   }

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "materials/stress_update.hpp"
+#include "materials/symmetric_tensor.hpp"
 
 namespace coldspray::material_test {
 
@@ -34,11 +35,6 @@ void check(const Loading& l) {
     throw InputError("--final-strain", "", "must be non-zero (negative is compression)");
   if (!(l.temperature > 0.0)) throw InputError("--temperature", "", "must be above 0 K");
   if (l.steps < 1) throw InputError("--steps", "", "must be at least 1");
-}
-
-double von_mises(const Matrix3d& sigma) {
-  const Matrix3d s = sigma - sigma.trace() / 3.0 * Matrix3d::Identity();
-  return std::sqrt(1.5 * (s.array() * s.array()).sum());
 }
 
 // One step with velocity gradient L held constant over dt: strain increment sym(L) dt, spin
@@ -102,7 +98,7 @@ Sample sample(const materials::Material& m, const PointState& s, double time, do
                 s.melt_temperature,
                 s.shear_modulus,
                 s.flow_stress,
-                von_mises(s.stress),
+                materials::von_mises_stress(s.stress),
                 s.pressure,
                 m.density / s.J};
 }

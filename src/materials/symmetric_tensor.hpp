@@ -62,6 +62,12 @@ inline SymmetricTensor deviator(const SymmetricTensor& a) {
   return a.plus_identity(-a.trace() / 3.0);
 }
 
+// The von Mises stress sqrt(3/2 s:s) of a stress (eq A5 on its deviator s).
+inline double von_mises_stress(const SymmetricTensor& sigma) { return deviator(sigma).von_mises(); }
+inline double von_mises_stress(const Eigen::Matrix3d& sigma) {
+  return von_mises_stress(SymmetricTensor::of(sigma));
+}
+
 // sigma + sigma W^T + W sigma = sigma + W sigma + (W sigma)^T for a skew spin increment W: the
 // Jaumann rotation of eq A2, written out for the upper triangle (W's is all that is read).
 inline SymmetricTensor jaumann_rotated(const SymmetricTensor& sigma, const Eigen::Matrix3d& W) {

@@ -1,8 +1,7 @@
 #include "run/snapshot.hpp"
 
-#include <cmath>
-
 #include "io/vtu.hpp"
+#include "materials/symmetric_tensor.hpp"
 
 namespace coldspray::run {
 
@@ -14,12 +13,9 @@ void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   for (std::size_t p = 0; p < n; ++p) {
     using namespace mpm;
     body[p] = P.body[p];
-    const double mean = (P.stress[kXX][p] + P.stress[kYY][p] + P.stress[kZZ][p]) / 3.0;
-    const double sxx = P.stress[kXX][p] - mean, syy = P.stress[kYY][p] - mean,
-                 szz = P.stress[kZZ][p] - mean;
-    const double shear = P.stress[kXY][p] * P.stress[kXY][p] + P.stress[kYZ][p] * P.stress[kYZ][p] +
-                         P.stress[kXZ][p] * P.stress[kXZ][p];
-    von_mises[p] = std::sqrt(1.5 * (sxx * sxx + syy * syy + szz * szz + 2.0 * shear));
+    von_mises[p] = materials::von_mises_stress(
+        materials::SymmetricTensor{{P.stress[kXX][p], P.stress[kYY][p], P.stress[kZZ][p],
+                                    P.stress[kXY][p], P.stress[kYZ][p], P.stress[kXZ][p]}});
     density[p] = s.bodies[P.body[p]].material.density / P.J[p];
   }
   io::VtuPointCloud cloud(P.position);

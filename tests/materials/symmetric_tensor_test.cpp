@@ -1,8 +1,10 @@
 // SymmetricTensor against the full-matrix formulas it replaces in the stress update, and the
-// Jaumann rotation of a uniaxial stress by hand.
+// Jaumann rotation of a uniaxial stress and the von Mises stress by hand.
 #include "materials/symmetric_tensor.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace coldspray::materials {
 namespace {
@@ -73,6 +75,18 @@ TEST(MaterialsSymmetricTensor, JaumannRotationOfUniaxialStressByHand) {
   EXPECT_EQ(r(0, 2), 0.0);
   EXPECT_EQ(r(1, 2), 0.0);
   EXPECT_EQ(r(2, 2), 0.0);
+}
+
+// The von Mises stress by hand: uniaxial sigma gives |sigma|, pure shear tau gives sqrt(3) tau,
+// and a pressure adds nothing.
+TEST(MaterialsSymmetricTensor, VonMisesStressByHand) {
+  EXPECT_NEAR(von_mises_stress(SymmetricTensor{{-250e6, 0.0, 0.0, 0.0, 0.0, 0.0}}), 250e6, 1e-6);
+  const double tau = 80e6, p = 1.3e9;
+  EXPECT_NEAR(von_mises_stress(SymmetricTensor{{0.0, 0.0, 0.0, 0.0, tau, 0.0}}),
+              std::sqrt(3.0) * tau, 1e-6);
+  Matrix3d sheared = -p * Matrix3d::Identity();
+  sheared(0, 2) = sheared(2, 0) = tau;
+  EXPECT_NEAR(von_mises_stress(sheared), std::sqrt(3.0) * tau, 1e-6);
 }
 
 }  // namespace
