@@ -45,10 +45,11 @@ double energy_bond_increment(const BondLaw& law, double von_mises, double d_eqps
 double bond_increment(const BondLaw& law, const Eigen::Matrix3d& stress, double d_eqps,
                       const Eigen::Vector3d& n, double dt) {
   if (d_eqps <= 0.0) return 0.0;
-  const Eigen::Matrix3d deviator = stress - stress.trace() / 3.0 * Eigen::Matrix3d::Identity();
   switch (law.model) {
-    case case_file::BondingModel::Strain:
+    case case_file::BondingModel::Strain: {
+      const Eigen::Matrix3d deviator = stress - stress.trace() / 3.0 * Eigen::Matrix3d::Identity();
       return strain_bond_increment(law, shear_plastic_strain_increment(d_eqps, deviator, n), dt);
+    }
     case case_file::BondingModel::Energy:
       return energy_bond_increment(law, materials::von_mises_stress(stress), d_eqps, dt);
     case case_file::BondingModel::None:
