@@ -3,8 +3,8 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 
+#include "io/appended_file.hpp"
 #include "mpm/state.hpp"
 
 namespace coldspray::run {
@@ -17,7 +17,7 @@ class ContactHistoryWriter {
   void record(const mpm::State& s);
 
  private:
-  std::ofstream out_;
+  io::AppendedFile out_;
 };
 
 }  // namespace coldspray::run

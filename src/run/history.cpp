@@ -2,34 +2,42 @@
 
 #include <fmt/format.h>
 
+#include <string>
+
 namespace coldspray::run {
 
-HistoryWriter::HistoryWriter(const mpm::State& s, const std::filesystem::path& path) : out_(path) {
-  out_ << "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,total";
+namespace {
+
+std::string header(const mpm::State& s) {
+  std::string h = "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,total";
   for (const auto& b : s.bodies)
     for (const char* q :
          {"vx", "vy", "vz", "contact_fx", "contact_fy", "contact_fz", "cor", "v_rest", "abp",
           "pbcp", "mean_eqps", "plastic_energy_density", "max_temperature", "jetted_fraction"})
-      out_ << fmt::format(",{}.{}", b.name, q);
-  out_ << "\n";
+      h += fmt::format(",{}.{}", b.name, q);
+  return h + "\n";
 }
+
+}  // namespace
+
+HistoryWriter::HistoryWriter(const mpm::State& s, const std::filesystem::path& path)
+    : out_(path, header(s)) {}
 
 void HistoryWriter::record(double time, const metrics::EnergyBudget& e,
                            const std::vector<metrics::BodyMetrics>& bodies) {
-  out_ << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", time,
-                      e.kinetic, e.elastic(), e.plastic_work, e.viscous, e.absorbed, e.contact,
-                      e.total());
+  std::string row = fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
+                                time, e.kinetic, e.elastic(), e.plastic_work, e.viscous, e.absorbed,
+                                e.contact, e.total());
   for (const auto& b : bodies) {
-    out_ << fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", b.velocity[0],
-                        b.velocity[1], b.velocity[2], b.contact_force[0], b.contact_force[1],
-                        b.contact_force[2]);
+    row += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", b.velocity[0],
+                       b.velocity[1], b.velocity[2], b.contact_force[0], b.contact_force[1],
+                       b.contact_force[2]);
     const metrics::ImpactMeasures& m = b.impact;
-    out_ << fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", m.cor,
-                        m.v_rest, m.abp, m.pbcp, b.mean_eqps, m.plastic_energy_density,
-                        b.max_temperature, m.jetted_fraction);
+    row += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", m.cor,
+                       m.v_rest, m.abp, m.pbcp, b.mean_eqps, m.plastic_energy_density,
+                       b.max_temperature, m.jetted_fraction);
   }
-  out_ << "\n";
-  out_.flush();
+  out_.append(row + "\n");
 }
 
 }  // namespace coldspray::run

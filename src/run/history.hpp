@@ -2,8 +2,8 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 
+#include "io/appended_file.hpp"
 #include "metrics/body_metrics.hpp"
 #include "metrics/energy.hpp"
 #include "mpm/state.hpp"
@@ -17,7 +17,7 @@ class HistoryWriter {
               const std::vector<metrics::BodyMetrics>& bodies);
 
  private:
-  std::ofstream out_;
+  io::AppendedFile out_;
 };
 
 }  // namespace coldspray::run

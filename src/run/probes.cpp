@@ -5,6 +5,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "materials/symmetric_tensor.hpp"
 
 namespace coldspray::run {
 
@@ -43,13 +46,10 @@ double probe_value(const mpm::State& s, std::size_t p, int field) {
   switch (field) {
     case 0:
       return P.pressure[p];
-    case 1: {
-      const double mean = (P.stress[kXX][p] + P.stress[kYY][p] + P.stress[kZZ][p]) / 3.0;
-      double sum = 0.0;
-      for (int c = 0; c < 3; ++c) sum += (P.stress[c][p] - mean) * (P.stress[c][p] - mean);
-      for (int c = 3; c < 6; ++c) sum += 2.0 * P.stress[c][p] * P.stress[c][p];
-      return std::sqrt(1.5 * sum);
-    }
+    case 1:
+      return materials::von_mises_stress(
+          materials::SymmetricTensor{{P.stress[kXX][p], P.stress[kYY][p], P.stress[kZZ][p],
+                                      P.stress[kXY][p], P.stress[kYZ][p], P.stress[kXZ][p]}});
     case 2:
       return s.bodies[P.body[p]].material.density / P.J[p];
     case 3:
@@ -65,25 +65,22 @@ double probe_value(const mpm::State& s, std::size_t p, int field) {
 ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm::State& s,
                          const std::filesystem::path& path) {
   if (probes.empty()) return;
-  out_.open(path);
-  out_ << "time";
+  std::string header = "time";
   for (const auto& probe : probes) {
     const std::size_t p = nearest_point(s, probe.position);
     for (const auto& f : probe.fields) {
       columns_.push_back({p, probe_field_index(f)});
-      out_ << fmt::format(",{}.{}", probe.name, f);
+      header += fmt::format(",{}.{}", probe.name, f);
     }
   }
-  out_ << "\n";
+  out_.emplace(path, header + "\n");
 }
 
 void ProbeWriter::record(const mpm::State& s) {
-  if (columns_.empty()) return;
-  out_ << fmt::format("{:.10g}", s.time);
-  for (const Column& c : columns_)
-    out_ << fmt::format(",{:.10g}", probe_value(s, c.point, c.field));
-  out_ << "\n";
-  out_.flush();
+  if (!out_) return;
+  std::string row = fmt::format("{:.10g}", s.time);
+  for (const Column& c : columns_) row += fmt::format(",{:.10g}", probe_value(s, c.point, c.field));
+  out_->append(row + "\n");
 }
 
 }  // namespace coldspray::run

@@ -3,11 +3,12 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "case/case.hpp"
+#include "io/appended_file.hpp"
 #include "mpm/state.hpp"
 
 namespace coldspray::run {
@@ -25,7 +26,7 @@ class ProbeWriter {
     int field;
   };
   std::vector<Column> columns_;
-  std::ofstream out_;
+  std::optional<io::AppendedFile> out_;
 };
 
 // The value of a probe field at a point; the field names are those of docs/input-reference.md.
