@@ -161,11 +161,12 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
   }
 }
 
-double nodal_bond(const ContactNodes& c, std::int32_t slot, int e1, int e2) {
+double nodal_bond(const ContactNodes& c, const std::vector<double>& bond_sum, std::int32_t slot,
+                  int e1, int e2) {
   double sum = 0.0;
   for (const int e : {e1, e2}) {
     const std::size_t f = ContactNodes::flat(slot, e);
-    if (c.surface_count[f] > 0) sum += c.bond_sum[f] / c.surface_count[f];
+    if (c.surface_count[f] > 0) sum += bond_sum[f] / c.surface_count[f];
   }
   return 0.5 * sum;
 }

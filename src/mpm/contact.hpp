@@ -122,7 +122,12 @@ void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, 
 
 // Eqs 4.6-4.7: the pair's global nodal bonding parameter, the mean of the two bodies' nodal
 // values, each sum_p D_bond N_I / n_sp over its surface points covering the node.
-double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2);
+// `bond_sum` is contact.bond_sum or sums laid out like it (mpm/bond_shadows.hpp).
+double nodal_bond(const ContactNodes& contact, const std::vector<double>& bond_sum,
+                  std::int32_t slot, int e1, int e2);
+inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2) {
+  return nodal_bond(contact, contact.bond_sum, slot, e1, e2);
+}
 
 // Whether a bonded node stays bonded. Always, for now: the place for a debonding law.
 inline bool bond_holds(double nodal_bond_value) { return nodal_bond_value >= 1.0; }

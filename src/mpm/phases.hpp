@@ -133,14 +133,17 @@ void map_bodies_to_contact_nodes(State& s) {
 // pair's normal, the furthest reach of the master body's points (x_p . n plus the point's
 // half-width along n) and the nearest reach of the other's, over the points covering the node.
 // For bonding: each body's sum of D_bond N_I over its surface points there, and their number
-// (eq 4.6). Minima and maxima are exact in any order, the sums run in slab order, and the slab
-// colouring keeps threads off each other's nodes.
+// (eq 4.6), and the same sums for the bond laws the run shadows. Minima and maxima are exact in any
+// order, the sums run in slab order, and the slab colouring keeps threads off each other's nodes.
 template <class Shape, bool Axisymmetric>
 void gather_contact_points(State& s) {
   const bool gap = s.contact_rule.gap_check, bonding = s.contact_rule.bonding;
   if (s.contact.size() == 0 || !(gap || bonding)) return;
   ContactNodes& cn = s.contact;
   const Points& P = s.points;
+  BondShadows& shadows = s.bond_shadows;
+  const bool shadowing = bonding && shadows.active();
+  if (shadowing) shadows.clear_sums(cn);
   for_each_point_by_slab(s.slabs, [&](std::size_t p) {
     if (!s.near_contact[cell_of(s, p)]) return;
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
@@ -153,6 +156,7 @@ void gather_contact_points(State& s) {
         const std::size_t f = ContactNodes::flat(slot, e);
         cn.bond_sum[f] += P.bond[p] * w;
         ++cn.surface_count[f];
+        if (shadowing) shadows.add_to_sums(p, f, w);
       }
       if (!gap) return;
       for (int o = 0; o < cn.body_count(slot); ++o) {

@@ -14,6 +14,7 @@
 #include "bonding/bond_law.hpp"
 #include "case/case.hpp"
 #include "materials/material.hpp"
+#include "mpm/bond_shadows.hpp"
 #include "mpm/contact.hpp"
 #include "mpm/grid.hpp"
 #include "mpm/points.hpp"
@@ -89,6 +90,9 @@ struct State {
   ContactRule contact_rule;
   ContactResult contact_result;  // of the last step
   bonding::BondLaw bond_law;     // D_bond evolution (thesis Chapter 4)
+  // Other runs' bond laws followed alongside (studies' bond families); while any are, this run's
+  // own D_bond stays zero.
+  BondShadows bond_shadows;
   case_file::ImpactMetrics impact_metrics;
 
   double time = 0.0;

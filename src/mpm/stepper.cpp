@@ -80,9 +80,12 @@ double stable_time_step(const State& s, double cfl) {
 
 namespace {
 
+// Steps 1-4 up to the contact decision: the grid, the contact nodes with their normals, and what
+// the contact step reads of the points (surfaces, nodal D_bond).
 template <class Shape, bool Axisymmetric>
-void musl_step(State& s) {
+void musl_to_contact(State& s) {
   const int bodies = static_cast<int>(s.bodies.size());
+  for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
   bin_points_into_slabs(s);
   s.grid.clear();
   apply_absorbing_dashpots(s);                          // external force, eq 3.46
@@ -92,7 +95,13 @@ void musl_step(State& s) {
   integrate_grid_momentum(s);                           // step 3, eq 3.28
   choose_contact_normals(s.contact, s.contact_rule,     // step 4, eq 3.30
                          s.constraint, bodies, s.contact_result);
-  gather_contact_points<Shape, Axisymmetric>(s);            //   surfaces, nodal D_bond (4.6)
+  gather_contact_points<Shape, Axisymmetric>(s);  //   surfaces, nodal D_bond (4.6)
+}
+
+// Steps 4-12 from the contact decision on.
+template <class Shape, bool Axisymmetric>
+void musl_from_contact(State& s) {
+  const int bodies = static_cast<int>(s.bodies.size());
   resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
                   s.contact_result);
   mark_touching_points<Shape, Axisymmetric>(s);               //   the bonding set S (§4.1.1)
@@ -112,10 +121,14 @@ void musl_step(State& s) {
 
 }  // namespace
 
-void step(State& s) {
-  for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
-  with_discretisation(s,
-                      [&]<class Shape, bool Axisymmetric>() { musl_step<Shape, Axisymmetric>(s); });
+void step_to_contact(State& s) {
+  with_discretisation(
+      s, [&]<class Shape, bool Axisymmetric>() { musl_to_contact<Shape, Axisymmetric>(s); });
+}
+
+void step_from_contact(State& s) {
+  with_discretisation(
+      s, [&]<class Shape, bool Axisymmetric>() { musl_from_contact<Shape, Axisymmetric>(s); });
   if (s.fault.point != std::numeric_limits<std::size_t>::max()) {
     const std::size_t p = s.fault.point;
     const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),
@@ -125,6 +138,11 @@ void step(State& s) {
         p - body->begin, s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
         s.points.position[2][p] * 1e6, s.time * 1e9, s.fault.cause));
   }
+}
+
+void step(State& s) {
+  step_to_contact(s);
+  step_from_contact(s);
 }
 
 }  // namespace coldspray::mpm

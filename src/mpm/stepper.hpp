@@ -13,4 +13,10 @@ double stable_time_step(const State& s, double cfl);
 // leaves the grid or its state stops being finite; the state is then that of the failed step.
 void step(State& s);
 
+// step() in two halves, split where the contact step decides which nodes are bonded, so that a
+// run can be copied there (run/bond_family.hpp): step_to_contact is steps 1-4 up to the contact
+// correction, step_from_contact the rest (and the fault check).
+void step_to_contact(State& s);
+void step_from_contact(State& s);
+
 }  // namespace coldspray::mpm

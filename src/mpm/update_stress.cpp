@@ -100,13 +100,17 @@ double update_body_stress(State& s, const BodyRange& body) {
         P.plastic_work[p] +=
             state.flow_stress * (state.eqps - eqps_before) * P.volume0[p] * state.J;
       P.sound_speed[p] = materials::point_wave_speed(models, state);
-      // Eqs 4.5 / 4.16a: D_bond grows at surface points in contact (the set S).
+      // Eqs 4.5 / 4.16a: D_bond grows at surface points in contact (the set S); the run's own,
+      // or that of each bond law it shadows.
       if (P.touching[p]) {
         P.touched[p] = 1;
         const Eigen::Vector3d n(P.contact_normal[0][p], P.contact_normal[1][p],
                                 P.contact_normal[2][p]);
-        P.bond[p] +=
-            bonding::bond_increment(s.bond_law, state.stress, state.eqps - eqps_before, n, dt);
+        const double d_eqps = state.eqps - eqps_before;
+        if (s.bond_shadows.active())
+          s.bond_shadows.grow(p, state.stress, d_eqps, n, dt);
+        else
+          P.bond[p] += bonding::bond_increment(s.bond_law, state.stress, d_eqps, n, dt);
       }
       for (int d = 0; d < 3; ++d) {
         P.position[d][p] += P.displacement[d][p];

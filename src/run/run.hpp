@@ -4,6 +4,9 @@
 #include <filesystem>
 
 #include "case/case.hpp"
+#include "mpm/state.hpp"
+#include "run/recorder.hpp"
+#include "run/step_rule.hpp"
 #include "run/summary.hpp"
 
 namespace coldspray::run {
@@ -13,13 +16,20 @@ struct RunOptions {
   bool progress = true;           // a progress line on stderr
 };
 
-// A run whose total energy grows past (1 + this) times its initial total stops as a fault.
-inline constexpr double kEnergyGrowthLimit = 0.2;
-
 // Runs the case and writes its results into options.out_dir: case.resolved.yaml, summary.json,
 // history.csv, probes.csv (with probes), snapshots/*.vtu and snapshots.pvd. Throws InputError
 // before writing anything if the case's geometry is invalid; on a fault during the run, writes
 // a last snapshot and a summary with the fault as status, then throws RunFault.
 Summary run_case(const case_file::Case& c, const RunOptions& options);
+
+// Where a run picks up: at the start of a step, or halfway through one, at the contact decision
+// (mpm::step_from_contact next), as a bond family's branch does.
+enum class ResumeAt { StepStart, Contact };
+
+// run_case's loop: steps `s` to the rule's end time, recording each step in `rec`, then writes
+// the last snapshot and the summary. On a fault, the same with the fault as status, then throws
+// RunFault naming the folder.
+Summary run_to_end(mpm::State& s, const StepRule& rule, Recorder& rec, bool progress,
+                   ResumeAt resume = ResumeAt::StepStart);
 
 }  // namespace coldspray::run

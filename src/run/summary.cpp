@@ -14,6 +14,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
   j["steps"] = s.steps;
   j["time"] = s.time;
   j["wall_seconds"] = s.wall_seconds;
+  j["shared_steps"] = s.shared_steps;
   j["threads"] = s.threads;
   j["particles"] = s.particles;
   j["particle_steps_per_second"] = s.particle_steps_per_second;

@@ -14,8 +14,9 @@ namespace coldspray::run {
 struct Summary {
   std::string status = "ok";  // "ok", or "fault: <message>"
   long steps = 0;
-  double time = 0.0;  // simulated, s
-  double wall_seconds = 0.0;
+  double time = 0.0;          // simulated, s
+  double wall_seconds = 0.0;  // of a bond-family member, with the shared steps in full
+  long shared_steps = 0;      // steps shared with other runs (run/bond_family.hpp)
   int threads = 1;
   std::size_t particles = 0;
   double particle_steps_per_second = 0.0;

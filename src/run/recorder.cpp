@@ -1,0 +1,93 @@
+#include "run/recorder.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include "case/load.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "metrics/body_metrics.hpp"
+#include "metrics/energy.hpp"
+#include "run/snapshot.hpp"
+
+namespace coldspray::run {
+
+namespace {
+
+std::filesystem::path prepared(std::filesystem::path out, const case_file::Case& c) {
+  std::filesystem::create_directories(out / "snapshots");
+  io::write_atomically(out / "case.resolved.yaml",
+                       [&](std::ostream& os) { case_file::write_resolved(c, os); });
+  return out;
+}
+
+}  // namespace
+
+Recorder::Recorder(const case_file::Case& c, const mpm::State& s, std::filesystem::path out)
+    : out_(prepared(std::move(out), c)),
+      snapshot_interval_(c.output.snapshot_interval),
+      history_(s, out_ / "history.csv"),
+      contact_history_(out_ / "contact.csv"),
+      probes_(c.output.probes, s, out_ / "probes.csv"),
+      pvd_(out_ / "snapshots.pvd"),
+      history_due_(c.output.history_interval),
+      snapshot_due_(c.output.snapshot_interval) {
+  summary_.threads = omp_get_max_threads();
+  summary_.particles = s.points.size();
+  summary_.total_energy_initial = metrics::energy_budget(s).total();
+}
+
+void Recorder::start(const mpm::State& s) {
+  after_step(s, /*last=*/true);  // the rows at t = 0, always
+  snapshot_due_.done(0.0);
+  snapshot(s);
+}
+
+bool Recorder::due(const mpm::State& s, bool last) const {
+  return last || history_due_.due(s.time) ||
+         (snapshot_interval_ > 0.0 && snapshot_due_.due(s.time));
+}
+
+void Recorder::after_step(const mpm::State& s, bool last) {
+  const bool rows = history_due_.due(s.time);
+  if (rows) history_due_.done(s.time);
+  if (rows || last) {
+    const metrics::EnergyBudget e = metrics::energy_budget(s);
+    history_.record(s.time, e, metrics::body_metrics(s));
+    contact_history_.record(s);
+    probes_.record(s);
+    if (e.total() > (1.0 + kEnergyGrowthLimit) * summary_.total_energy_initial)
+      throw RunFault(
+          fmt::format("total energy grew to {:.4g} J from {:.4g} J at t = {:.6g} ns "
+                      "(an instability: try a smaller solver.cfl)",
+                      e.total(), summary_.total_energy_initial, s.time * 1e9));
+  }
+  if (snapshot_interval_ > 0.0 && !last && snapshot_due_.due(s.time)) {
+    snapshot_due_.done(s.time);
+    snapshot(s);
+  }
+}
+
+void Recorder::snapshot(const mpm::State& s) {
+  const std::string name = fmt::format("snapshots/step_{:08d}.vtu", s.step);
+  write_snapshot(s, out_ / name);
+  pvd_.add(s.time, name);
+}
+
+Summary Recorder::finish(const mpm::State& s, const std::string& status) {
+  snapshot(s);
+  summary_.status = status;
+  summary_.steps = s.step;
+  summary_.time = s.time;
+  summary_.last_dt = s.dt;
+  summary_.particle_steps_per_second =
+      summary_.wall_seconds > 0.0 ? static_cast<double>(s.step) *
+                                        static_cast<double>(s.points.size()) / summary_.wall_seconds
+                                  : 0.0;
+  summary_.energy = metrics::energy_budget(s);
+  summary_.bodies = metrics::body_metrics(s);
+  write_summary_json(summary_, out_ / "summary.json");
+  return summary_;
+}
+
+}  // namespace coldspray::run

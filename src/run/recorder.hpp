@@ -1,0 +1,57 @@
+// A run's outputs in its folder, written as it goes: case.resolved.yaml, history.csv,
+// contact.csv, probes.csv, snapshots/*.vtu with snapshots.pvd, and at the end summary.json.
+// run_case keeps one; a bond family keeps one per member (run/bond_family.hpp).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "case/case.hpp"
+#include "io/vtu.hpp"
+#include "mpm/state.hpp"
+#include "run/contact_history.hpp"
+#include "run/history.hpp"
+#include "run/probes.hpp"
+#include "run/schedule.hpp"
+#include "run/summary.hpp"
+
+namespace coldspray::run {
+
+class Recorder {
+ public:
+  // Creates the folder and writes case.resolved.yaml and the tables' headers; `s` is the state
+  // at t = 0.
+  Recorder(const case_file::Case& c, const mpm::State& s, std::filesystem::path out);
+
+  // At t = 0: the first rows and the first snapshot.
+  void start(const mpm::State& s);
+  // Whether rows or a snapshot fall due after the step that ended at s.time.
+  bool due(const mpm::State& s, bool last) const;
+  // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
+  // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
+  void after_step(const mpm::State& s, bool last);
+  // Wall time spent on the run, and how many of its steps it shared with other runs.
+  void add_wall(double seconds) { summary_.wall_seconds += seconds; }
+  void add_shared_step() { ++summary_.shared_steps; }
+  // The last snapshot, and summary.json with `status` ("ok" or "fault: ...").
+  Summary finish(const mpm::State& s, const std::string& status);
+
+  const std::filesystem::path& folder() const { return out_; }
+
+ private:
+  void snapshot(const mpm::State& s);
+
+  std::filesystem::path out_;
+  double snapshot_interval_;
+  HistoryWriter history_;
+  ContactHistoryWriter contact_history_;
+  ProbeWriter probes_;
+  io::PvdCollection pvd_;
+  Schedule history_due_, snapshot_due_;
+  Summary summary_;
+};
+
+// A run whose total energy grows past (1 + this) times its initial total stops as a fault.
+inline constexpr double kEnergyGrowthLimit = 0.2;
+
+}  // namespace coldspray::run

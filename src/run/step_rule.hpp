@@ -1,0 +1,30 @@
+// How a run chooses its time step and when it ends: solver.cfl, solver.dt_scale, solver.end_time.
+#pragma once
+
+#include <algorithm>
+
+#include "case/case.hpp"
+#include "mpm/state.hpp"
+#include "mpm/stepper.hpp"
+
+namespace coldspray::run {
+
+struct StepRule {
+  // From the case and the state at t = 0: solver.dt_scale fixes dt at that fraction of h / c of
+  // the undeformed materials (the thesis' scaling of the critical step, §5.1.4); otherwise dt
+  // follows the CFL bound every step.
+  StepRule(const case_file::Case& c, const mpm::State& s)
+      : end(c.solver.end_time),
+        cfl(c.solver.cfl),
+        fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * mpm::stable_time_step(s, 1.0) : 0.0) {}
+
+  // The next step's dt, the last one shortened to land on the end time.
+  double next_dt(const mpm::State& s) const {
+    return std::min(fixed_dt > 0.0 ? fixed_dt : mpm::stable_time_step(s, cfl), end - s.time);
+  }
+  bool finished(const mpm::State& s) const { return s.time >= end * (1.0 - 1e-12); }
+
+  double end, cfl, fixed_dt;
+};
+
+}  // namespace coldspray::run

@@ -1,0 +1,123 @@
+// Bond families (run/bond_family.hpp) against independent runs: members that share the unbonded
+// trajectory and leave it at different steps, or never, write exactly what run_case writes for
+// them, file for file and bit for bit, but for the wall time. The small bonding impact
+// (examples/verification/bonding-impact.yaml, 20 ns) with G_c = 1 J/m^2 bonds at first contact,
+// 50 J/m^2 some steps later, 200 and 3000 J/m^2 never bond a node (their particles rebound).
+#include "run/bond_family.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "case/load.hpp"
+#include "run/run.hpp"
+#include "temp_dir.hpp"
+
+namespace coldspray::run {
+namespace {
+
+namespace fs = std::filesystem;
+
+case_file::Case bonding_impact(const std::string& critical_energy,
+                               const std::string& velocity = "-800 m/s") {
+  return case_file::load_case(
+      std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/bonding-impact.yaml",
+      {{"bonding.critical_energy", critical_energy},
+       {"bodies.particle.velocity", "[0, 0, " + velocity + "]"},
+       {"solver.end_time", "20 ns"},
+       {"output.snapshot_interval", "5 ns"}});
+}
+
+std::string contents(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every file under the folder, by path relative to it.
+std::set<std::string> files_under(const fs::path& folder) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.is_regular_file()) names.insert(fs::relative(entry.path(), folder).string());
+  return names;
+}
+
+nlohmann::json summary_without_timing(const fs::path& folder) {
+  nlohmann::json j = nlohmann::json::parse(contents(folder / "summary.json"));
+  for (const char* key : {"wall_seconds", "particle_steps_per_second", "shared_steps"})
+    j.erase(key);
+  return j;
+}
+
+TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
+  const std::vector<std::string> energies = {"1 J/m^2", "50 J/m^2", "200 J/m^2", "3000 J/m^2"};
+  const fs::path dir = testing::make_temp_dir("bond-family");
+  std::vector<FamilyMember> members;
+  for (std::size_t i = 0; i < energies.size(); ++i) {
+    const case_file::Case c = bonding_impact(energies[i]);
+    RunOptions solo;
+    solo.out_dir = dir / "solo" / std::to_string(i);
+    solo.progress = false;
+    run_case(c, solo);
+    members.push_back({c, dir / "family" / std::to_string(i)});
+  }
+
+  // Branches run after the trunk has returned, as a scheduler may run them.
+  std::vector<std::function<void()>> branches;
+  std::vector<int> finished(members.size(), 0);
+  FamilyHooks hooks;
+  hooks.spawn = [&](std::function<void()> branch) { branches.push_back(std::move(branch)); };
+  hooks.finished = [&](std::size_t member, std::exception_ptr failure) {
+    EXPECT_FALSE(failure) << "member " << member;
+    ++finished[member];
+  };
+  run_bond_family(members, hooks);
+  EXPECT_EQ(branches.size(), 2u);  // G_c = 1 and 50 J/m^2 bond; 200 and 3000 never do
+  for (auto& branch : branches) branch();
+  for (std::size_t i = 0; i < members.size(); ++i) EXPECT_EQ(finished[i], 1) << i;
+
+  std::vector<long> shared(members.size()), steps(members.size());
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const fs::path solo = dir / "solo" / std::to_string(i), family = members[i].out_dir;
+    const std::set<std::string> names = files_under(solo);
+    EXPECT_EQ(files_under(family), names) << energies[i];
+    for (const std::string& name : names) {
+      if (name == "summary.json") continue;
+      EXPECT_TRUE(contents(solo / name) == contents(family / name)) << energies[i] << ": " << name;
+    }
+    EXPECT_EQ(summary_without_timing(solo), summary_without_timing(family)) << energies[i];
+    const nlohmann::json s = nlohmann::json::parse(contents(family / "summary.json"));
+    shared[i] = s["shared_steps"].get<long>();
+    steps[i] = s["steps"].get<long>();
+  }
+  std::printf("steps shared with the trunk: %ld, %ld, %ld, %ld of %ld, %ld, %ld, %ld\n", shared[0],
+              shared[1], shared[2], shared[3], steps[0], steps[1], steps[2], steps[3]);
+  EXPECT_LT(shared[0], shared[1]);  // 1 J/m^2 leaves first,
+  EXPECT_LT(shared[1], steps[1]);   // 50 J/m^2 later,
+  EXPECT_EQ(shared[2], steps[2]);   // the others never
+  EXPECT_EQ(shared[3], steps[3]);
+}
+
+TEST(BondFamily, OnlyTheBondingParametersMayDiffer) {
+  const case_file::Case a = bonding_impact("50 J/m^2");
+  EXPECT_TRUE(same_but_bonding(a, bonding_impact("3000 J/m^2")));
+  EXPECT_FALSE(same_but_bonding(a, bonding_impact("50 J/m^2", "-700 m/s")));
+  case_file::Case unbonded = a;
+  unbonded.bonding.model = case_file::BondingModel::None;
+  EXPECT_FALSE(same_but_bonding(unbonded, unbonded));
+  FamilyHooks hooks;
+  hooks.spawn = [](std::function<void()>) {};
+  hooks.finished = [](std::size_t, std::exception_ptr) {};
+  EXPECT_THROW(
+      run_bond_family({{a, "unused-a"}, {bonding_impact("50 J/m^2", "-700 m/s"), "b"}}, hooks),
+      std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace coldspray::run
