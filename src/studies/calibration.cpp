@@ -2,17 +2,19 @@
 
 #include <fmt/format.h>
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "run/bond_family.hpp"
 #include "studies/case_runner.hpp"
 #include "studies/decision_boundary.hpp"
+#include "studies/task_pool.hpp"
 
 namespace coldspray::studies {
 
@@ -90,26 +92,66 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
   for (const CalibrationRun& run : runs) folders.push_back(run.folder);
   const std::vector<std::size_t> pending =
       pending_folders(folders, options.rank, options.ranks, counts.skipped);
-  std::atomic<std::size_t> done{0}, failed{0};
+  std::size_t done = 0, failed = 0;
   std::mutex report;
   const auto start = std::chrono::steady_clock::now();
-  run_parallel(pending.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
-    const CalibrationRun& run = runs[pending[k]];
-    const bool ok = run_in_folder(run.folder, [&] { return make_case(run); });
-    std::lock_guard<std::mutex> lock(report);
+  auto finished = [&](std::size_t r, const std::exception_ptr& failure) {
+    const bool ok = record_outcome(runs[r].folder, failure);
+    const std::lock_guard<std::mutex> lock(report);
     ++done;
     if (!ok) ++failed;
     if (!options.progress) return;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cerr << fmt::format("\rcalibrate: {}/{} run, {} failed, {} skipped, ETA {:.0f} s   ",
-                             done.load(), pending.size(), failed.load(), counts.skipped,
-                             elapsed / done.load() * (pending.size() - done.load()))
+    std::cerr << fmt::format("\rcalibrate: {}/{} run, {} failed, {} skipped, ETA {:.0f} s   ", done,
+                             pending.size(), failed, counts.skipped,
+                             elapsed / done * (pending.size() - done))
               << std::flush;
-  });
-  if (options.progress && !pending.empty()) std::cerr << "\n";
-  counts.ran = done.load();
-  counts.failed = failed.load();
+  };
+
+  // The runs of one grid and size differ only in the bonding parameters: each such group is one
+  // bond family (run/bond_family.hpp), whose members share their trajectory until they bond. A
+  // family queues its branches for any free job, or past twice as many waiting as there are
+  // jobs (each holds a copy of the state) runs them itself.
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> families;
+  for (const std::size_t r : pending) families[{runs[r].grid, runs[r].size}].push_back(r);
+  TaskPool pool(options.jobs, options.threads_per_job);
+  for (const auto& [key, family] : families)
+    pool.submit([&, family = family] {
+      std::vector<run::FamilyMember> members;
+      std::vector<std::size_t> member_run;
+      for (const std::size_t r : family) {
+        std::exception_ptr failure;
+        try {
+          fs::remove_all(runs[r].folder);
+          fs::create_directories(runs[r].folder);
+          members.push_back({make_case(runs[r]), runs[r].folder});
+          member_run.push_back(r);
+          continue;
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        finished(r, failure);
+      }
+      run::FamilyHooks hooks;
+      hooks.spawn = [&pool](std::function<void()> branch) {
+        if (pool.queued() >= 2 * static_cast<std::size_t>(pool.jobs()))
+          branch();
+        else
+          pool.submit(std::move(branch));
+      };
+      hooks.finished = [&finished, member_run](std::size_t m, const std::exception_ptr& failure) {
+        finished(member_run[m], failure);
+      };
+      try {
+        run::run_bond_family(members, hooks);
+      } catch (...) {  // not one family after all: a defect of make_case, recorded for each run
+        for (const std::size_t r : member_run) finished(r, std::current_exception());
+      }
+    });
+  pool.run();
+  counts.ran = done;
+  counts.failed = failed;
   return counts;
 }
 

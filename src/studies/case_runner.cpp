@@ -1,16 +1,13 @@
 #include "studies/case_runner.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
-#include <atomic>
 #include <fstream>
-#include <thread>
 #include <vector>
 
 #include "core/error.hpp"
 #include "run/run.hpp"
 #include "run/summary.hpp"
+#include "studies/task_pool.hpp"
 
 namespace coldspray::studies {
 
@@ -44,7 +41,16 @@ bool run_in_folder(const fs::path& folder, const std::function<case_file::Case()
     options.out_dir = folder;
     options.progress = false;
     run::run_case(c, options);
-    return true;
+  } catch (...) {
+    return record_outcome(folder, std::current_exception());
+  }
+  return true;
+}
+
+bool record_outcome(const fs::path& folder, const std::exception_ptr& failure) {
+  if (!failure) return true;
+  try {
+    std::rethrow_exception(failure);
   } catch (const InputError& e) {
     record_failure(folder, std::string("input error: ") + e.what());
   } catch (const RunFault& e) {
@@ -78,18 +84,9 @@ std::string csv_field(const std::string& text) {
 
 void run_parallel(std::size_t count, int jobs, int threads_per_job,
                   const std::function<void(std::size_t)>& body) {
-  const int workers = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
-  const int threads =
-      threads_per_job > 0 ? threads_per_job : std::max(1, omp_get_max_threads() / workers);
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    omp_set_num_threads(threads);
-    for (std::size_t k = next++; k < count; k = next++) body(k);
-  };
-  std::vector<std::thread> pool;
-  for (int j = 1; j < workers; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  TaskPool pool(std::max(1, std::min<int>(jobs, static_cast<int>(count))), threads_per_job);
+  for (std::size_t k = 0; k < count; ++k) pool.submit([&body, k] { body(k); });
+  pool.run();
 }
 
 }  // namespace coldspray::studies

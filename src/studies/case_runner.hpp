@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -22,10 +23,15 @@ bool case_finished(const std::filesystem::path& folder);
 nlohmann::json read_summary(const std::filesystem::path& folder);
 
 // Clears `folder`, then calls `load` (which may write notes into the folder) and runs the case
-// there. An InputError, RunFault or other exception is recorded as the summary's status
-// ("input error: ...", "fault: ...", "error: ..."); returns false then.
+// there. An InputError, RunFault or other exception is recorded as by record_outcome; returns
+// false then.
 bool run_in_folder(const std::filesystem::path& folder,
                    const std::function<case_file::Case()>& load);
+
+// How a case in `folder` ended: true for no failure; otherwise an InputError, RunFault or other
+// exception is recorded as the summary's status ("input error: ...", "fault: ...", "error: ...",
+// keeping the summary a RunFault's run has written) and false returned.
+bool record_outcome(const std::filesystem::path& folder, const std::exception_ptr& failure);
 
 // The indices of `folders` that this rank runs (i % ranks == rank) and that are not finished;
 // `skipped` counts this rank's finished ones.
