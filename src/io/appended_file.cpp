@@ -24,6 +24,6 @@ AppendedFile::AppendedFile(std::filesystem::path path, std::string_view header)
   write(path_, header, std::ios::trunc);
 }
 
-void AppendedFile::append(std::string_view text) const { write(path_, text, std::ios::app); }
+void AppendedFile::append(std::string_view text) { write(path_, text, std::ios::app); }
 
 }  // namespace coldspray::io

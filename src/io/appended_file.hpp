@@ -14,7 +14,7 @@ class AppendedFile {
   // Creates or empties the file and writes `header`. Throws RunFault if it cannot.
   AppendedFile(std::filesystem::path path, std::string_view header);
   // Adds `text` at the end. Throws RunFault if it cannot.
-  void append(std::string_view text) const;
+  void append(std::string_view text);
 
  private:
   std::filesystem::path path_;

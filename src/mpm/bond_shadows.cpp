@@ -1,6 +1,7 @@
 #include "mpm/bond_shadows.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <utility>
 
 namespace coldspray::mpm {
@@ -23,10 +24,12 @@ void BondShadows::follow(const std::vector<bonding::BondLaw>& laws, const Points
 void BondShadows::grow(std::size_t p, const Eigen::Matrix3d& stress, double d_eqps,
                        const Eigen::Vector3d& n, double dt) {
   const std::int32_t col = column_[p];
+  assert(col >= 0);  // only surface points touch (mark_touching_points)
   for (std::size_t k = 0; k < laws_.size(); ++k)
     bond_[k][col] += bonding::bond_increment(laws_[k], stress, d_eqps, n, dt);
 }
 
+// Grows only when the contact storage has (ContactNodes::add), not step by step.
 void BondShadows::clear_sums(const ContactNodes& c) {
   const std::size_t entries = c.size() * kMaxBodiesPerNode;
   for (auto& sums : bond_sum_) {

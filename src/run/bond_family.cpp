@@ -26,6 +26,12 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+std::string resolved(const case_file::Case& c) {
+  std::ostringstream out;
+  case_file::write_resolved(c, out);
+  return out.str();
+}
+
 // A member gone its own way: the trunk halfway through the step where the member's first node
 // bonded, with the member's D_bond and law; and the member's recorder.
 struct Branch {
@@ -34,11 +40,156 @@ struct Branch {
   std::size_t member = 0;
 };
 
-std::string resolved(const case_file::Case& c) {
-  std::ostringstream out;
-  case_file::write_resolved(c, out);
-  return out.str();
-}
+// The shared run and the members still on it (its bond shadows). Every member leaves it once,
+// through branch_off, end_member or fail_member, each of which calls hooks.finished or hands the
+// member on to a branch that does.
+class Trunk {
+ public:
+  Trunk(const std::vector<FamilyMember>& members, const FamilyHooks& hooks, mpm::State state)
+      : members_(members),
+        hooks_(hooks),
+        state_(std::move(state)),
+        shadows_(state_.bond_shadows),
+        rule_(members[0].c, state_),
+        recorders_(members.size()) {}
+
+  void run() {
+    open_recorders();
+    while (shadows_.active() && !rule_.finished(state_)) {
+      const auto t0 = Clock::now();
+      state_.dt = rule_.next_dt(state_);
+      if (!step(mpm::step_to_contact)) return;
+      const double shared = seconds_since(t0);
+      double handed_on = 0.0;
+      for (std::size_t k = shadows_.size(); k-- > 0;)
+        if (shadows_.bonds_now(k, state_.contact)) handed_on += branch_off(k, shared);
+      if (!shadows_.active()) return;
+      if (!step(mpm::step_from_contact)) return;
+      record_step(rule_.finished(state_));
+      const double wall = seconds_since(t0) - handed_on;
+      for (std::size_t k = 0; k < shadows_.size(); ++k) {
+        recorders_[shadows_.id(k)]->add_wall(wall);
+        recorders_[shadows_.id(k)]->add_shared_step();
+      }
+    }
+    for (std::size_t k = shadows_.size(); k-- > 0;) end_member(k, nullptr);
+  }
+
+ private:
+  // Each member's folder and its t = 0 outputs.
+  void open_recorders() {
+    for (std::size_t k = shadows_.size(); k-- > 0;) {
+      const std::size_t i = shadows_.id(k);
+      try {
+        const auto t0 = Clock::now();
+        recorders_[i] = std::make_unique<Recorder>(members_[i].c, state_, members_[i].out_dir);
+        recorders_[i]->start(state_);
+        recorders_[i]->add_wall(seconds_since(t0));
+      } catch (...) {
+        fail_member(k, std::current_exception());
+      }
+    }
+  }
+
+  // Half a step of the trunk; a fault in it ends every member still on it, as it would each
+  // alone. Returns whether the trunk goes on.
+  bool step(void (*half)(mpm::State&)) {
+    try {
+      half(state_);
+      return true;
+    } catch (const RunFault& fault) {
+      for (std::size_t k = shadows_.size(); k-- > 0;) end_member(k, &fault);
+    } catch (...) {
+      for (std::size_t k = shadows_.size(); k-- > 0;) fail_member(k, std::current_exception());
+    }
+    return false;
+  }
+
+  // The rows and snapshots due, each member's with its own D_bond. A member whose recording
+  // fails ends as it would alone (run_to_end): a RunFault with its last snapshot and summary.
+  void record_step(bool last) {
+    for (std::size_t k = shadows_.size(); k-- > 0;) {
+      Recorder& rec = *recorders_[shadows_.id(k)];
+      if (!rec.due(state_, last)) continue;
+      try {
+        shadows_.write_bond(k, state_.points);
+        rec.after_step(state_, last);
+      } catch (const RunFault& fault) {
+        end_member(k, &fault);
+      } catch (...) {
+        fail_member(k, std::current_exception());
+      }
+    }
+    shadows_.clear_bond(state_.points);
+  }
+
+  // Shadow k's member leaves, halfway through the step (`shared` seconds into it): a copy of the
+  // trunk with its D_bond, sums and law goes to the scheduler. Returns the time spent handing it
+  // on (the scheduler may run it there and then), which is not the trunk's.
+  double branch_off(std::size_t k, double shared) {
+    const auto handing = Clock::now();
+    const std::size_t i = shadows_.id(k);
+    try {
+      auto branch = std::make_shared<Branch>();
+      branch->state = state_;
+      branch->state.bond_shadows = {};
+      shadows_.impose(k, branch->state.points, branch->state.contact);
+      branch->state.bond_law = shadows_.law(k);
+      branch->member = i;
+      branch->recorder = std::move(recorders_[i]);
+      branch->recorder->add_wall(shared);
+      shadows_.drop(k);
+      hooks_.spawn([branch, rule = rule_, finished = hooks_.finished] {
+        std::exception_ptr failure;
+        try {
+          run_to_end(branch->state, rule, *branch->recorder, /*progress=*/false, ResumeAt::Contact);
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        finished(branch->member, failure);
+      });
+    } catch (...) {  // no memory for the copy, or the scheduler refused it
+      if (shadows_.size() > k && shadows_.id(k) == i)
+        fail_member(k, std::current_exception());
+      else
+        hooks_.finished(i, std::current_exception());
+    }
+    return seconds_since(handing);
+  }
+
+  // Shadow k's member ends on the trunk: at the end (`fault` null) or with the fault, as
+  // run_to_end ends a run: the last snapshot and the summary, then the RunFault.
+  void end_member(std::size_t k, const RunFault* fault) {
+    const std::size_t i = shadows_.id(k);
+    std::exception_ptr failure;
+    try {
+      shadows_.write_bond(k, state_.points);
+      recorders_[i]->finish(state_, fault ? fmt::format("fault: {}", fault->what()) : "ok");
+      if (fault)
+        throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault->what(),
+                                   members_[i].out_dir.string()));
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    shadows_.clear_bond(state_.points);
+    fail_member(k, failure);
+  }
+
+  // Shadow k's member leaves with `failure` (null: none).
+  void fail_member(std::size_t k, std::exception_ptr failure) {
+    const std::size_t i = shadows_.id(k);
+    recorders_[i].reset();
+    shadows_.drop(k);
+    hooks_.finished(i, std::move(failure));
+  }
+
+  const std::vector<FamilyMember>& members_;
+  const FamilyHooks& hooks_;
+  mpm::State state_;
+  mpm::BondShadows& shadows_;
+  const StepRule rule_;
+  std::vector<std::unique_ptr<Recorder>> recorders_;
+};
 
 }  // namespace
 
@@ -61,9 +212,9 @@ void run_bond_family(const std::vector<FamilyMember>& members, const FamilyHooks
           fmt::format("bond family: '{}' differs from '{}' in more than its bonding parameters",
                       members[i].out_dir.string(), members[0].out_dir.string()));
 
-  mpm::State trunk;
+  mpm::State state;
   try {
-    trunk = mpm::build_state(members[0].c);
+    state = mpm::build_state(members[0].c);
   } catch (...) {
     for (std::size_t i = 0; i < members.size(); ++i) hooks.finished(i, std::current_exception());
     return;
@@ -71,107 +222,8 @@ void run_bond_family(const std::vector<FamilyMember>& members, const FamilyHooks
   std::vector<bonding::BondLaw> laws;
   for (const FamilyMember& m : members)
     laws.push_back(bonding::BondLaw::from_case(m.c.bonding, m.c.grid.cell_size));
-  mpm::BondShadows& shadows = trunk.bond_shadows;
-  shadows.follow(laws, trunk.points);
-  const StepRule rule(members[0].c, trunk);
-
-  // Each member's folder and its t = 0 outputs; a member whose folder cannot be written is out.
-  std::vector<std::unique_ptr<Recorder>> recorders(members.size());
-  for (std::size_t k = shadows.size(); k-- > 0;) {
-    const std::size_t i = shadows.id(k);
-    try {
-      const auto t0 = Clock::now();
-      recorders[i] = std::make_unique<Recorder>(members[i].c, trunk, members[i].out_dir);
-      recorders[i]->start(trunk);
-      recorders[i]->add_wall(seconds_since(t0));
-    } catch (...) {
-      shadows.drop(k);
-      hooks.finished(i, std::current_exception());
-    }
-  }
-
-  // Shadow k's member leaves, halfway through the step (`shared` seconds into it). Returns the
-  // time spent handing it on (the scheduler may run it there and then), not the trunk's.
-  auto branch_off = [&](std::size_t k, double shared) {
-    auto branch = std::make_shared<Branch>();
-    mpm::BondShadows followed = std::exchange(trunk.bond_shadows, {});
-    branch->state = trunk;  // without the shadows
-    trunk.bond_shadows = std::move(followed);
-    shadows.impose(k, branch->state.points, branch->state.contact);
-    branch->state.bond_law = shadows.law(k);
-    branch->member = shadows.id(k);
-    branch->recorder = std::move(recorders[branch->member]);
-    branch->recorder->add_wall(shared);
-    const auto handing = Clock::now();
-    hooks.spawn([branch, rule, finished = hooks.finished] {
-      std::exception_ptr failure;
-      try {
-        run_to_end(branch->state, rule, *branch->recorder, /*progress=*/false, ResumeAt::Contact);
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      finished(branch->member, failure);
-    });
-    return seconds_since(handing);
-  };
-
-  // The members still on the trunk, finished from it: at its end, or with the trunk's fault.
-  auto finish_followed = [&](const RunFault* fault) {
-    const std::string status = fault ? fmt::format("fault: {}", fault->what()) : "ok";
-    for (std::size_t k = 0; k < shadows.size(); ++k) {
-      const std::size_t i = shadows.id(k);
-      std::exception_ptr failure;
-      try {
-        shadows.write_bond(k, trunk.points);
-        recorders[i]->finish(trunk, status);
-        if (fault)
-          throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault->what(),
-                                     members[i].out_dir.string()));
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      hooks.finished(i, failure);
-    }
-    shadows.clear_bond(trunk.points);
-  };
-
-  try {
-    while (shadows.active() && !rule.finished(trunk)) {
-      const auto t0 = Clock::now();
-      trunk.dt = rule.next_dt(trunk);
-      mpm::step_to_contact(trunk);
-      const double shared = seconds_since(t0);
-      double handed_on = 0.0;
-      for (std::size_t k = shadows.size(); k-- > 0;)
-        if (shadows.bonds_now(k, trunk.contact)) {
-          handed_on += branch_off(k, shared);
-          shadows.drop(k);
-        }
-      if (!shadows.active()) return;
-      mpm::step_from_contact(trunk);
-      const bool last = rule.finished(trunk);
-      for (std::size_t k = 0; k < shadows.size(); ++k) {
-        Recorder& rec = *recorders[shadows.id(k)];
-        if (!rec.due(trunk, last)) continue;
-        shadows.write_bond(k, trunk.points);
-        rec.after_step(trunk, last);
-      }
-      shadows.clear_bond(trunk.points);
-      const double wall = seconds_since(t0) - handed_on;
-      for (std::size_t k = 0; k < shadows.size(); ++k) {
-        recorders[shadows.id(k)]->add_wall(wall);
-        recorders[shadows.id(k)]->add_shared_step();
-      }
-    }
-  } catch (const RunFault& fault) {
-    finish_followed(&fault);
-    return;
-  } catch (...) {
-    for (std::size_t k = 0; k < shadows.size(); ++k)
-      hooks.finished(shadows.id(k), std::current_exception());
-    return;
-  }
-  finish_followed(nullptr);
+  state.bond_shadows.follow(laws, state.points);
+  Trunk(members, hooks, std::move(state)).run();
 }
 
 }  // namespace coldspray::run

@@ -28,9 +28,10 @@ struct FamilyHooks {
   // Takes a branch's remaining run, to be called once, on any thread, with this thread's
   // OpenMP setting (the caller's scheduler; calling it at once is fine).
   std::function<void(std::function<void()>)> spawn;
-  // Called once per member, on the thread that finished it: null when its run went to the end,
-  // else why it did not (an InputError, a RunFault after the fault's summary was written, or any
-  // other exception, with nothing written for it).
+  // Called once per member, on the thread that finished it (so possibly from several threads at
+  // once), and must not throw: null when its run went to the end, else why it did not (an
+  // InputError, a RunFault after the fault's summary was written, or any other exception, with
+  // no summary written for it).
   std::function<void(std::size_t member, std::exception_ptr failure)> finished;
 };
 

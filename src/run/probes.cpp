@@ -77,7 +77,7 @@ ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm:
 }
 
 void ProbeWriter::record(const mpm::State& s) {
-  if (!out_) return;
+  if (columns_.empty()) return;
   std::string row = fmt::format("{:.10g}", s.time);
   for (const Column& c : columns_) row += fmt::format(",{:.10g}", probe_value(s, c.point, c.field));
   out_->append(row + "\n");

@@ -43,15 +43,20 @@ void Recorder::start(const mpm::State& s) {
   snapshot(s);
 }
 
+Recorder::Due Recorder::falling_due(const mpm::State& s, bool last) const {
+  return {last || history_due_.due(s.time),
+          !last && snapshot_interval_ > 0.0 && snapshot_due_.due(s.time)};
+}
+
 bool Recorder::due(const mpm::State& s, bool last) const {
-  return last || history_due_.due(s.time) ||
-         (snapshot_interval_ > 0.0 && snapshot_due_.due(s.time));
+  const Due d = falling_due(s, last);
+  return d.rows || d.snapshot;
 }
 
 void Recorder::after_step(const mpm::State& s, bool last) {
-  const bool rows = history_due_.due(s.time);
-  if (rows) history_due_.done(s.time);
-  if (rows || last) {
+  const Due d = falling_due(s, last);
+  if (d.rows) {
+    history_due_.done(s.time);
     const metrics::EnergyBudget e = metrics::energy_budget(s);
     history_.record(s.time, e, metrics::body_metrics(s));
     contact_history_.record(s);
@@ -62,7 +67,7 @@ void Recorder::after_step(const mpm::State& s, bool last) {
                       "(an instability: try a smaller solver.cfl)",
                       e.total(), summary_.total_energy_initial, s.time * 1e9));
   }
-  if (snapshot_interval_ > 0.0 && !last && snapshot_due_.due(s.time)) {
+  if (d.snapshot) {
     snapshot_due_.done(s.time);
     snapshot(s);
   }

@@ -39,6 +39,11 @@ class Recorder {
   const std::filesystem::path& folder() const { return out_; }
 
  private:
+  // Rows (always on the last step) and a snapshot (never on it: finish() writes that one).
+  struct Due {
+    bool rows, snapshot;
+  };
+  Due falling_due(const mpm::State& s, bool last) const;
   void snapshot(const mpm::State& s);
 
   std::filesystem::path out_;

@@ -96,7 +96,11 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
   std::mutex report;
   const auto start = std::chrono::steady_clock::now();
   auto finished = [&](std::size_t r, const std::exception_ptr& failure) {
-    const bool ok = record_outcome(runs[r].folder, failure);
+    bool ok = false;
+    try {
+      ok = record_outcome(runs[r].folder, failure);
+    } catch (...) {  // not even the failure could be written: the run stays pending on disk
+    }
     const std::lock_guard<std::mutex> lock(report);
     ++done;
     if (!ok) ++failed;
@@ -111,8 +115,8 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
 
   // The runs of one grid and size differ only in the bonding parameters: each such group is one
   // bond family (run/bond_family.hpp), whose members share their trajectory until they bond. A
-  // family queues its branches for any free job, or past twice as many waiting as there are
-  // jobs (each holds a copy of the state) runs them itself.
+  // family queues its branches for any free job or, once twice as many tasks wait as there are
+  // jobs (a branch holds a copy of the state), runs them itself.
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> families;
   for (const std::size_t r : pending) families[{runs[r].grid, runs[r].size}].push_back(r);
   TaskPool pool(options.jobs, options.threads_per_job);
@@ -145,7 +149,7 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
       };
       try {
         run::run_bond_family(members, hooks);
-      } catch (...) {  // not one family after all: a defect of make_case, recorded for each run
+      } catch (const std::invalid_argument&) {  // not one family: a defect of make_case
         for (const std::size_t r : member_run) finished(r, std::current_exception());
       }
     });

@@ -17,7 +17,7 @@ class TaskPool {
   // (0: the cores shared among the jobs).
   TaskPool(int jobs, int threads_per_job);
 
-  // From any thread, also from a running task. Tasks must not throw.
+  // Before run(), or from a running task (on any thread). Tasks must not throw.
   void submit(std::function<void()> task);
   // Tasks waiting for a thread.
   std::size_t queued() const;

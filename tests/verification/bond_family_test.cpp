@@ -1,8 +1,9 @@
 // Bond families (run/bond_family.hpp) against independent runs: members that share the unbonded
 // trajectory and leave it at different steps, or never, write exactly what run_case writes for
 // them, file for file and bit for bit, but for the wall time. The small bonding impact
-// (examples/verification/bonding-impact.yaml, 20 ns) with G_c = 1 J/m^2 bonds at first contact,
-// 50 J/m^2 some steps later, 200 and 3000 J/m^2 never bond a node (their particles rebound).
+// (examples/verification/bonding-impact.yaml, 20 ns) with G_c = 1 and 1.5 J/m^2 bonds at first
+// contact, 50 J/m^2 some steps later, 200 and 3000 J/m^2 never bond a node (their particles
+// rebound). A member whose folder cannot be written fails alone.
 #include "run/bond_family.hpp"
 
 #include <gtest/gtest.h>
@@ -56,7 +57,8 @@ nlohmann::json summary_without_timing(const fs::path& folder) {
 }
 
 TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
-  const std::vector<std::string> energies = {"1 J/m^2", "50 J/m^2", "200 J/m^2", "3000 J/m^2"};
+  const std::vector<std::string> energies = {"1 J/m^2", "1.5 J/m^2", "50 J/m^2", "200 J/m^2",
+                                             "3000 J/m^2"};
   const fs::path dir = testing::make_temp_dir("bond-family");
   std::vector<FamilyMember> members;
   for (std::size_t i = 0; i < energies.size(); ++i) {
@@ -67,23 +69,28 @@ TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
     run_case(c, solo);
     members.push_back({c, dir / "family" / std::to_string(i)});
   }
+  std::ofstream(dir / "not-a-folder") << "a file where the last member's folder would go\n";
+  members.push_back({bonding_impact("200 J/m^2"), dir / "not-a-folder" / "member"});
 
   // Branches run after the trunk has returned, as a scheduler may run them.
   std::vector<std::function<void()>> branches;
-  std::vector<int> finished(members.size(), 0);
+  std::vector<int> finished(members.size(), 0), failed(members.size(), 0);
   FamilyHooks hooks;
   hooks.spawn = [&](std::function<void()> branch) { branches.push_back(std::move(branch)); };
   hooks.finished = [&](std::size_t member, std::exception_ptr failure) {
-    EXPECT_FALSE(failure) << "member " << member;
     ++finished[member];
+    failed[member] += failure != nullptr;
   };
   run_bond_family(members, hooks);
-  EXPECT_EQ(branches.size(), 2u);  // G_c = 1 and 50 J/m^2 bond; 200 and 3000 never do
+  EXPECT_EQ(branches.size(), 3u);  // G_c = 1, 1.5 and 50 J/m^2 bond; 200 and 3000 never do
   for (auto& branch : branches) branch();
-  for (std::size_t i = 0; i < members.size(); ++i) EXPECT_EQ(finished[i], 1) << i;
-
-  std::vector<long> shared(members.size()), steps(members.size());
   for (std::size_t i = 0; i < members.size(); ++i) {
+    EXPECT_EQ(finished[i], 1) << i;
+    EXPECT_EQ(failed[i], i == energies.size() ? 1 : 0) << i;
+  }
+
+  std::vector<long> shared(energies.size()), steps(energies.size());
+  for (std::size_t i = 0; i < energies.size(); ++i) {
     const fs::path solo = dir / "solo" / std::to_string(i), family = members[i].out_dir;
     const std::set<std::string> names = files_under(solo);
     EXPECT_EQ(files_under(family), names) << energies[i];
@@ -96,12 +103,14 @@ TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
     shared[i] = s["shared_steps"].get<long>();
     steps[i] = s["steps"].get<long>();
   }
-  std::printf("steps shared with the trunk: %ld, %ld, %ld, %ld of %ld, %ld, %ld, %ld\n", shared[0],
-              shared[1], shared[2], shared[3], steps[0], steps[1], steps[2], steps[3]);
-  EXPECT_LT(shared[0], shared[1]);  // 1 J/m^2 leaves first,
-  EXPECT_LT(shared[1], steps[1]);   // 50 J/m^2 later,
-  EXPECT_EQ(shared[2], steps[2]);   // the others never
-  EXPECT_EQ(shared[3], steps[3]);
+  for (std::size_t i = 0; i < energies.size(); ++i)
+    std::printf("G_c = %s: %ld of %ld steps shared with the trunk\n", energies[i].c_str(),
+                shared[i], steps[i]);
+  EXPECT_LE(shared[0], shared[1]);  // 1 and 1.5 J/m^2 leave first,
+  EXPECT_LT(shared[1], shared[2]);  // 50 J/m^2 later,
+  EXPECT_LT(shared[2], steps[2]);
+  EXPECT_EQ(shared[3], steps[3]);  // the others never
+  EXPECT_EQ(shared[4], steps[4]);
 }
 
 TEST(BondFamily, OnlyTheBondingParametersMayDiffer) {
