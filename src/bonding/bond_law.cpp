@@ -42,20 +42,37 @@ double energy_bond_increment(const BondLaw& law, double von_mises, double d_eqps
   return dG / (law.critical_energy * rate_factor(dG / (law.critical_energy_rate * dt), law.floor));
 }
 
-double bond_increment(const BondLaw& law, const Eigen::Matrix3d& stress, double d_eqps,
-                      const Eigen::Vector3d& n, double dt) {
-  if (d_eqps <= 0.0) return 0.0;
-  switch (law.model) {
+double bond_drive(case_file::BondingModel model, const Eigen::Matrix3d& stress, double d_eqps,
+                  const Eigen::Vector3d& n) {
+  switch (model) {
     case case_file::BondingModel::Strain: {
       const Eigen::Matrix3d deviator = stress - stress.trace() / 3.0 * Eigen::Matrix3d::Identity();
-      return strain_bond_increment(law, shear_plastic_strain_increment(d_eqps, deviator, n), dt);
+      return shear_plastic_strain_increment(d_eqps, deviator, n);
     }
     case case_file::BondingModel::Energy:
-      return energy_bond_increment(law, materials::von_mises_stress(stress), d_eqps, dt);
+      return materials::von_mises_stress(stress);
     case case_file::BondingModel::None:
       break;
   }
   return 0.0;
+}
+
+double bond_increment_from_drive(const BondLaw& law, double drive, double d_eqps, double dt) {
+  switch (law.model) {
+    case case_file::BondingModel::Strain:
+      return strain_bond_increment(law, drive, dt);
+    case case_file::BondingModel::Energy:
+      return energy_bond_increment(law, drive, d_eqps, dt);
+    case case_file::BondingModel::None:
+      break;
+  }
+  return 0.0;
+}
+
+double bond_increment(const BondLaw& law, const Eigen::Matrix3d& stress, double d_eqps,
+                      const Eigen::Vector3d& n, double dt) {
+  if (d_eqps <= 0.0) return 0.0;
+  return bond_increment_from_drive(law, bond_drive(law.model, stress, d_eqps, n), d_eqps, dt);
 }
 
 }  // namespace coldspray::bonding

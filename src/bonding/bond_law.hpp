@@ -41,8 +41,14 @@ double strain_bond_increment(const BondLaw& law, double d_shear_strain, double d
 double energy_bond_increment(const BondLaw& law, double von_mises, double d_eqps, double dt);
 
 // The increment of D_bond over a step at a surface point in contact, by the law's model, from
-// the point's Cauchy stress after the step, its plastic strain increment and its outward contact
-// normal n.
+// the point's Cauchy stress after the step, its plastic strain increment d_eqps > 0 and its
+// outward contact normal n; in two parts, so that several laws of one model (a bond family,
+// mpm/bond_shadows.hpp) share the first: the drive, which no parameter enters (the von Mises
+// stress for the energy model, the shear plastic strain increment for the strain model), and the
+// increment from it.
+double bond_drive(case_file::BondingModel model, const Eigen::Matrix3d& stress, double d_eqps,
+                  const Eigen::Vector3d& n);
+double bond_increment_from_drive(const BondLaw& law, double drive, double d_eqps, double dt);
 double bond_increment(const BondLaw& law, const Eigen::Matrix3d& stress, double d_eqps,
                       const Eigen::Vector3d& n, double dt);
 

@@ -25,8 +25,11 @@ void BondShadows::grow(std::size_t p, const Eigen::Matrix3d& stress, double d_eq
                        const Eigen::Vector3d& n, double dt) {
   const std::int32_t col = column_[p];
   assert(col >= 0);  // only surface points touch (mark_touching_points)
+  if (d_eqps <= 0.0 || laws_.empty()) return;
+  // The laws share their model (run_bond_family checks), so the drive is computed once.
+  const double drive = bonding::bond_drive(laws_[0].model, stress, d_eqps, n);
   for (std::size_t k = 0; k < laws_.size(); ++k)
-    bond_[k][col] += bonding::bond_increment(laws_[k], stress, d_eqps, n, dt);
+    bond_[k][col] += bonding::bond_increment_from_drive(laws_[k], drive, d_eqps, dt);
 }
 
 // Grows only when the contact storage has (ContactNodes::add), not step by step.
