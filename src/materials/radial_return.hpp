@@ -17,6 +17,7 @@
 // over to the regula falsi on what is left of it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace coldspray::materials {
@@ -35,10 +36,18 @@ struct PlasticIncrement {
   int evaluations = 0;          // of the flow stress
 };
 
-// Offset of the second secant point from the guess, relative: small enough that the first
-// secant step is nearly a Newton step from the guess, large enough that the secant slope is
+// Largest offset of the second secant point from the guess, relative: small enough that the
+// first secant step is nearly a Newton step from the guess, large enough that the secant slope is
 // not rounding noise.
 inline constexpr double kSecantOffset = 0.02;
+
+// The second secant point, from the guess x0 and f0 = f(x0). As f decreases at least as fast as
+// -3G x, the root lies between x0 and x0 + f0/(3G) (the end of the bracket on that side), and half
+// that step stays inside the bracket: a guess that was already close (in an impact, most warm
+// points) gets a second point as close, where a fixed offset would overshoot the bracket.
+inline double second_secant_point(double x0, double f0, double three_G) {
+  return x0 + std::clamp(0.5 * f0 / three_G, -kSecantOffset * x0, kSecantOffset * x0);
+}
 // Secant evaluations before the bracketed solve takes over.
 inline constexpr int kSecantMaxEvaluations = 8;
 
@@ -106,8 +115,7 @@ PlasticIncrement consistent_return(double trial, double three_G, double guess, F
 
   // Secant steps from the guess, each evaluation narrowing the bracket.
   if (warm) {
-    // The second point on the side of the root.
-    double x1 = x0 * (f0 > 0.0 ? 1.0 + kSecantOffset : 1.0 - kSecantOffset);
+    double x1 = second_secant_point(x0, f0, three_G);
     while (best_residual > tolerance && best.evaluations < kSecantMaxEvaluations && x1 > a &&
            x1 < b) {
       const double flow_1 = flow(x1);

@@ -42,7 +42,9 @@ COLDSPRAY_SIMD_TARGET void consistent_return_lanes(simd::Doubles trial, simd::Do
   Doubles evaluations = simd::broadcast(1.0);
 
   // Secant steps from the guess, each evaluation narrowing the bracket.
-  Doubles x1 = x0 * (yields ? 1.0 + kSecantOffset : 1.0 - kSecantOffset);
+  // The second point as second_secant_point's.
+  const Doubles largest_offset = kSecantOffset * x0;
+  Doubles x1 = x0 + simd::min(simd::max(0.5 * f0 / three_G, -largest_offset), largest_offset);
   for (;;) {
     const Mask active = warm & (best_residual > tolerance) & (evaluations < kSecantMaxEvaluations) &
                         (x1 > a) & (x1 < b);
