@@ -11,8 +11,8 @@ void apply_node_constraints(State& s, bool force_too) {
     if (held == 0) continue;
     for (int d = 0; d < 3; ++d)
       if (held & (1u << d)) {
-        g.momentum[d][n] = 0.0;
-        if (force_too) g.force[d][n] = 0.0;
+        g.sums[n].momentum[d] = 0.0;
+        if (force_too) g.sums[n].force[d] = 0.0;
       }
   }
   ContactNodes& c = s.contact;

@@ -28,20 +28,32 @@ struct GridLayout {
   double extent(int axis) const { return origin[axis] + (nodes[axis] - 1) * h; }
 };
 
+// What a node gathers from the points in steps 1-2 (and its momentum again in the re-map of
+// step 8), side by side: a point's scatter to a node then touches one cache line, where one
+// array per quantity made it seven.
+struct alignas(64) NodeSums {
+  double mass = 0.0;                 // kg
+  std::array<double, 3> momentum{};  // kg m/s
+  std::array<double, 3> force{};     // N
+};
+
+// Eq 3.32's nodal velocities p/m and the step's velocity change f dt/m, side by side for the
+// grid-to-point phases, which read both at each node of a point's stencil.
+struct NodeMotion {
+  std::array<double, 3> velocity;         // m/s
+  std::array<double, 3> velocity_change;  // m/s
+};
+
 // Nodal quantities summed over all bodies.
 struct GridFields {
-  std::vector<double> mass;                     // kg
-  std::array<std::vector<double>, 3> momentum;  // kg m/s
-  std::array<std::vector<double>, 3> force;     // N
+  std::vector<NodeSums> sums;
   // Which bodies reach a node this step: none, the one body that does, or two and more.
   static constexpr std::int32_t kNoBody = -1, kManyBodies = -2;
   std::vector<std::int32_t> reached_by;
   // Index of the node's slot in the contact storage, or -1 where only one body has mass.
   std::vector<std::int32_t> contact_slot;
-  // Eq 3.32's nodal velocities p/m and the step's velocity change f dt/m, once per phase that
-  // reads them (mpm/phases.hpp: compute_nodal_velocities).
-  std::array<std::vector<double>, 3> velocity;         // m/s
-  std::array<std::vector<double>, 3> velocity_change;  // m/s
+  // Once per phase that reads them (mpm/phases.hpp: compute_nodal_velocities).
+  std::vector<NodeMotion> motion;
 
   void resize(std::size_t n);
   void clear();  // zero the sums for a new step (no allocation); velocities follow from them

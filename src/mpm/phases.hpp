@@ -75,10 +75,11 @@ void map_points_to_grid(State& s) {
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       double f[3];
       c.force(w, gx, gy, gz, f);
-      g.mass[n] += w * c.m;
+      NodeSums& node = g.sums[n];
+      node.mass += w * c.m;
       for (int d = 0; d < 3; ++d) {
-        g.momentum[d][n] += w * c.mv[d];
-        g.force[d][n] += f[d];
+        node.momentum[d] += w * c.mv[d];
+        node.force[d] += f[d];
       }
       // (One word per node: a byte-wide flag here would alias every array of the loop.)
       const std::int32_t seen = g.reached_by[n];
@@ -224,10 +225,12 @@ inline void compute_nodal_velocities(State& s, bool with_forces) {
   const double dt = s.dt, floor = s.mass_floor;
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < nodes; ++n) {
-    const bool moves = g.mass[n] > floor;
+    const NodeSums& sums = g.sums[n];
+    NodeMotion& motion = g.motion[n];
+    const bool moves = sums.mass > floor;
     for (int d = 0; d < 3; ++d) {
-      g.velocity[d][n] = moves ? g.momentum[d][n] / g.mass[n] : 0.0;
-      if (with_forces) g.velocity_change[d][n] = moves ? g.force[d][n] * dt / g.mass[n] : 0.0;
+      motion.velocity[d] = moves ? sums.momentum[d] / sums.mass : 0.0;
+      if (with_forces) motion.velocity_change[d] = moves ? sums.force[d] * dt / sums.mass : 0.0;
     }
   }
   ContactNodes& c = s.contact;
@@ -257,9 +260,10 @@ inline NodeView node_view(const State& s, std::size_t n, int b) {
   const std::int32_t slot = s.grid.contact_slot[n];
   const int e = slot < 0 ? -1 : s.contact.find(slot, b);
   if (e < 0) {
+    const NodeMotion& motion = s.grid.motion[n];
     for (int d = 0; d < 3; ++d) {
-      v.v[d] = s.grid.velocity[d][n];
-      v.dv[d] = s.grid.velocity_change[d][n];
+      v.v[d] = motion.velocity[d];
+      v.dv[d] = motion.velocity_change[d];
       v.dv_contact[d] = 0.0;
     }
   } else {
@@ -286,7 +290,7 @@ void update_point_velocities_and_remap(State& s) {
   GridFields& g = s.grid;
   ContactNodes& cn = s.contact;
   Points& P = s.points;
-  for (auto& a : g.momentum) std::fill(a.begin(), a.end(), 0.0);
+  for (NodeSums& node : g.sums) node.momentum = {0.0, 0.0, 0.0};
   const std::size_t used = cn.size() * kMaxBodiesPerNode;
   for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
@@ -311,7 +315,7 @@ void update_point_velocities_and_remap(State& s) {
     }
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
       const double wm = w * m;
-      for (int d = 0; d < 3; ++d) g.momentum[d][n] += wm * v_new[d];
+      for (int d = 0; d < 3; ++d) g.sums[n].momentum[d] += wm * v_new[d];
       const std::int32_t slot = g.contact_slot[n];
       if (slot < 0) return;
       // Every point near a contact node got its entry in map_bodies_to_contact_nodes.

@@ -62,7 +62,7 @@ void integrate_grid_momentum(State& s) {
   const double dt = s.dt;
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < nodes; ++n)
-    for (int d = 0; d < 3; ++d) g.momentum[d][n] += g.force[d][n] * dt;
+    for (int d = 0; d < 3; ++d) g.sums[n].momentum[d] += g.sums[n].force[d] * dt;
   ContactNodes& c = s.contact;
   for (std::size_t slot = 0; slot < c.size(); ++slot)
     for (int e = 0; e < c.body_count(static_cast<std::int32_t>(slot)); ++e) {
