@@ -327,7 +327,8 @@ void update_point_velocities_and_remap(State& s) {
 
 // Steps 9-11 (eqs 3.34-3.36, Appendix A) for the points of one body: velocity gradient from the
 // nodal velocities, density, artificial viscosity, the material's stress update; then the
-// position update. Returns the largest c + |v| of the body's points.
+// position update. Called by every thread of a parallel region, which shares out the points;
+// returns the largest c + |v| of the calling thread's points.
 template <class Shape, bool Axisymmetric>
 double update_body_stress(State& s, const BodyRange& body);
 

@@ -110,8 +110,13 @@ void musl_from_contact(State& s) {
   update_point_velocities_and_remap<Shape, Axisymmetric>(s);  // steps 7-8, eqs 3.32-3.33
   apply_node_constraints(s, /*force_too=*/false);             //   with the essential BCs
   compute_nodal_velocities(s, /*with_forces=*/false);         //   v = p/m of the re-map
-  double max_speed = 0.0;                                     // steps 9-11, eqs 3.34-3.36
-  for (const BodyRange& body : s.bodies)                      //   and Appendix A
+  // Steps 9-11, eqs 3.34-3.36 and Appendix A. One parallel region for all bodies: points that
+  // flow plastically cost several flow-stress evaluations, and they gather where bodies touch.
+  // Points are seeded upward in z, so that is the start of a particle's points and the end of
+  // its substrate's, and the threads' shares even out over the bodies together.
+  double max_speed = 0.0;
+#pragma omp parallel reduction(max : max_speed)
+  for (const BodyRange& body : s.bodies)
     max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
   s.max_signal_speed = max_speed;
   account_absorbed_work(s);

@@ -45,7 +45,9 @@ void check_point(const State& s, std::size_t p, Fault& fault) {
 // Steps 9-11 for one body (eqs 3.34-3.36, Appendix A), in batches of points that the material
 // update takes together (materials/stress_update_lanes.hpp). Batches start at fixed offsets from
 // the body's first point and a short last batch is padded with copies of its first point, so a
-// point's result depends neither on the thread count nor on its neighbours.
+// point's result depends neither on the thread count nor on its neighbours. Called by every
+// thread of a parallel region, body after body: a thread that is done with its share of one body
+// goes on to the next without waiting, and returns the largest c + |v| of the points it took.
 template <class Shape, bool Axisymmetric>
 double update_body_stress(State& s, const BodyRange& body) {
   using materials::kBatchPoints;
@@ -125,7 +127,7 @@ double update_body_stress(State& s, const BodyRange& body) {
 
     const long batches =
         static_cast<long>((body.end - body.begin + kBatchPoints - 1) / kBatchPoints);
-#pragma omp parallel for schedule(static) reduction(max : max_speed)
+#pragma omp for schedule(static) nowait
     for (long batch = 0; batch < batches; ++batch) {
       const std::size_t first = body.begin + static_cast<std::size_t>(batch) * kBatchPoints;
       const int count = static_cast<int>(std::min<std::size_t>(kBatchPoints, body.end - first));
