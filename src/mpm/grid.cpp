@@ -1,7 +1,5 @@
 #include "mpm/grid.hpp"
 
-#include <algorithm>
-
 namespace coldspray::mpm {
 
 void GridFields::resize(std::size_t n) {
@@ -13,9 +11,14 @@ void GridFields::resize(std::size_t n) {
 }
 
 void GridFields::clear() {
-  std::fill(sums.begin(), sums.end(), NodeSums{});
-  std::fill(reached_by.begin(), reached_by.end(), kNoBody);
-  std::fill(contact_slot.begin(), contact_slot.end(), -1);
+  // In parallel: a few MB a step in 3D, which one thread writes in about half a millisecond.
+  const long n = static_cast<long>(sums.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    sums[i] = NodeSums{};
+    reached_by[i] = kNoBody;
+    contact_slot[i] = -1;
+  }
 }
 
 }  // namespace coldspray::mpm

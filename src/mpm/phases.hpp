@@ -290,7 +290,9 @@ void update_point_velocities_and_remap(State& s) {
   GridFields& g = s.grid;
   ContactNodes& cn = s.contact;
   Points& P = s.points;
-  for (NodeSums& node : g.sums) node.momentum = {0.0, 0.0, 0.0};
+  const long nodes = static_cast<long>(g.sums.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nodes; ++n) g.sums[n].momentum = {0.0, 0.0, 0.0};
   const std::size_t used = cn.size() * kMaxBodiesPerNode;
   for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
