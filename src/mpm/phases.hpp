@@ -1,6 +1,6 @@
 // The phases of one MUSL step (thesis §3.4), each a loop over points or nodes. Templated on the
 // shape function and on the geometry (3D or axisymmetric r-z) so the inner loops are tight.
-// Point-to-grid phases run slab by slab (State::Slabs) so they are race-free and deterministic;
+// Point-to-grid phases run block by block (State::Blocks) so they are race-free and deterministic;
 // grid-to-point phases write only their own point.
 #pragma once
 
@@ -15,14 +15,16 @@
 
 namespace coldspray::mpm {
 
-// Calls f(p) for every point, even slabs in parallel, then odd slabs.
+// Calls f(p) for every point: the blocks of one colour in parallel, colour after colour.
 template <class F>
-void for_each_point_by_slab(const Slabs& slabs, F&& f) {
-  const long count = static_cast<long>(slabs.begin.size()) - 1;
-  for (long colour = 0; colour < 2; ++colour) {
+void for_each_point_by_block(const Blocks& blocks, F&& f) {
+  const auto per_colour = static_cast<long>(blocks.per_colour);
+  for (long colour = 0; colour < Blocks::kColours; ++colour) {
+    const long first = colour * per_colour, last = first + per_colour;
+    if (blocks.begin[first] == blocks.begin[last]) continue;  // (r-z: the odd strips)
 #pragma omp parallel for schedule(dynamic, 1)
-    for (long s = colour; s < count; s += 2)
-      for (std::size_t i = slabs.begin[s]; i < slabs.begin[s + 1]; ++i) f(slabs.order[i]);
+    for (long b = first; b < last; ++b)
+      for (std::size_t i = blocks.begin[b]; i < blocks.begin[b + 1]; ++i) f(blocks.order[i]);
   }
 }
 
@@ -67,7 +69,7 @@ template <class Shape, bool Axisymmetric>
 void map_points_to_grid(State& s) {
   GridFields& g = s.grid;
   auto& stencils = std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils);
-  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+  for_each_point_by_block(s.blocks, [&](std::size_t p) {
     Stencil<Shape, Axisymmetric>& st = stencils[p];
     st.evaluate(s.layout, s.points, p);
     const PointContribution<Axisymmetric> c(s, p);
@@ -108,7 +110,7 @@ template <class Shape, bool Axisymmetric>
 void map_bodies_to_contact_nodes(State& s) {
   if (s.contact.size() == 0) return;
   ContactNodes& cn = s.contact;
-  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+  for_each_point_by_block(s.blocks, [&](std::size_t p) {
     if (!s.near_contact[cell_of(s, p)]) return;
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const PointContribution<Axisymmetric> c(s, p);
@@ -135,7 +137,7 @@ void map_bodies_to_contact_nodes(State& s) {
 // half-width along n) and the nearest reach of the other's, over the points covering the node.
 // For bonding: each body's sum of D_bond N_I over its surface points there, and their number
 // (eq 4.6), and the same sums for the bond laws the run shadows. Minima and maxima are exact in any
-// order, the sums run in slab order, and the slab colouring keeps threads off each other's nodes.
+// order, the sums run in block order, and the block colouring keeps threads off each other's nodes.
 template <class Shape, bool Axisymmetric>
 void gather_contact_points(State& s) {
   const bool gap = s.contact_rule.gap_check, bonding = s.contact_rule.bonding;
@@ -145,7 +147,7 @@ void gather_contact_points(State& s) {
   BondShadows& shadows = s.bond_shadows;
   const bool shadowing = bonding && shadows.active();
   if (shadowing) shadows.clear_sums(cn);
-  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+  for_each_point_by_block(s.blocks, [&](std::size_t p) {
     if (!s.near_contact[cell_of(s, p)]) return;
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
@@ -296,7 +298,7 @@ void update_point_velocities_and_remap(State& s) {
   const std::size_t used = cn.size() * kMaxBodiesPerNode;
   for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
-  for_each_point_by_slab(s.slabs, [&](std::size_t p) {
+  for_each_point_by_block(s.blocks, [&](std::size_t p) {
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
     const double m = P.mass[p];

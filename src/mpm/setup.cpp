@@ -324,9 +324,15 @@ State build_state(const case_file::Case& c) {
   with_discretisation(s, [&]<class Shape, bool Axisymmetric>() {
     std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils).resize(total);
   });
-  s.slabs.order.resize(total);
-  s.slabs.slab_of.resize(total);
-  s.slabs.begin.resize(static_cast<std::size_t>(s.layout.nodes[2] / Slabs::kSlabCells) + 3);
+  // Blocks cover the nodes (and so every point inside the ghost layer) along y and z.
+  Blocks& blocks = s.blocks;
+  blocks.strips = s.layout.nodes[1] / Blocks::kBlockCells + 2;
+  const int slabs = s.layout.nodes[2] / Blocks::kBlockCells + 2;
+  blocks.per_colour = static_cast<std::size_t>((blocks.strips + 1) / 2) * ((slabs + 1) / 2);
+  blocks.order.resize(total);
+  blocks.block_of.resize(total);
+  blocks.begin.resize(Blocks::kColours * blocks.per_colour + 1);
+  blocks.cursor.resize(Blocks::kSortChunks * (blocks.begin.size() - 1));
 
   s.contact_rule.normal = c.contact.normal;
   s.contact_rule.friction = c.contact.friction;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 #include "mpm/boundaries.hpp"
@@ -13,25 +14,50 @@ namespace coldspray::mpm {
 
 namespace {
 
-// Bins the points into z slabs, stable in the point index: the order every point-to-grid phase
-// scatters in, and so the order of every nodal sum.
-void bin_points_into_slabs(State& s) {
-  Slabs& sl = s.slabs;
-  const std::size_t n = s.points.size();
-  const double inv = 1.0 / (s.layout.h * Slabs::kSlabCells);
-  std::fill(sl.begin.begin(), sl.begin.end(), 0);
-  for (std::size_t p = 0; p < n; ++p) {
-    const auto slab =
-        static_cast<std::uint32_t>((s.points.position[2][p] - s.layout.origin[2]) * inv);
-    sl.slab_of[p] = slab;
-    ++sl.begin[slab + 1];
+// Bins the points into blocks (State::Blocks), stable in the point index: the order every
+// point-to-grid phase scatters in, and so the order of every nodal sum. A counting sort over fixed
+// chunks of the points: each chunk counts its points per block, the chunks' shares of each block
+// follow one another in chunk order, and each chunk then places its points in index order.
+void bin_points_into_blocks(State& s) {
+  Blocks& B = s.blocks;
+  const Points& P = s.points;
+  const GridLayout& L = s.layout;
+  const long n = static_cast<long>(P.size());
+  const std::size_t blocks = B.begin.size() - 1;
+  const double inv = 1.0 / (L.h * Blocks::kBlockCells);
+  const bool flat = L.nodes[1] == 1;  // r-z: one layer of nodes in y
+  const std::size_t row = static_cast<std::size_t>(B.strips + 1) / 2;
+  auto block_of = [&](std::size_t p) {
+    const auto z = static_cast<std::size_t>((P.position[2][p] - L.origin[2]) * inv);
+    const auto y = flat ? 0 : static_cast<std::size_t>((P.position[1][p] - L.origin[1]) * inv);
+    const std::size_t colour = (z % 2) * 2 + y % 2;
+    return static_cast<std::uint32_t>(colour * B.per_colour + (z / 2) * row + y / 2);
+  };
+  auto chunk_begin = [&](long c) { return static_cast<std::size_t>(n * c / Blocks::kSortChunks); };
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < Blocks::kSortChunks; ++c) {
+    std::size_t* count = &B.cursor[static_cast<std::size_t>(c) * blocks];
+    std::fill_n(count, blocks, 0);
+    for (std::size_t p = chunk_begin(c); p < chunk_begin(c + 1); ++p) {
+      B.block_of[p] = block_of(p);
+      ++count[B.block_of[p]];
+    }
   }
-  for (std::size_t k = 1; k < sl.begin.size(); ++k) sl.begin[k] += sl.begin[k - 1];
-  // begin[] doubles as the insertion cursor, then is shifted back.
-  for (std::size_t p = 0; p < n; ++p)
-    sl.order[sl.begin[sl.slab_of[p]]++] = static_cast<std::uint32_t>(p);
-  for (std::size_t k = sl.begin.size() - 1; k > 0; --k) sl.begin[k] = sl.begin[k - 1];
-  sl.begin[0] = 0;
+  std::size_t offset = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    B.begin[b] = offset;
+    for (std::size_t c = 0; c < Blocks::kSortChunks; ++c) {
+      std::size_t& k = B.cursor[c * blocks + b];
+      offset += std::exchange(k, offset);
+    }
+  }
+  B.begin[blocks] = offset;
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < Blocks::kSortChunks; ++c) {
+    std::size_t* cursor = &B.cursor[static_cast<std::size_t>(c) * blocks];
+    for (std::size_t p = chunk_begin(c); p < chunk_begin(c + 1); ++p)
+      B.order[cursor[B.block_of[p]]++] = static_cast<std::uint32_t>(p);
+  }
 }
 
 // The nodes two or more bodies reach get a contact slot; the cells whose points can reach such
@@ -86,7 +112,7 @@ template <class Shape, bool Axisymmetric>
 void musl_to_contact(State& s) {
   const int bodies = static_cast<int>(s.bodies.size());
   for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
-  bin_points_into_slabs(s);
+  bin_points_into_blocks(s);
   s.grid.clear();
   apply_absorbing_dashpots(s);                          // external force, eq 3.46
   map_points_to_grid<Shape, Axisymmetric>(s);           // steps 1-2, eqs 3.23-3.27

@@ -1,5 +1,5 @@
-// The same case gives bit-identical results with 1 and 2 threads: point-to-grid sums run slab by
-// slab in a fixed order (mpm/state.hpp), so the thread count cannot change any rounding.
+// The same case gives bit-identical results with 1 and 2 threads: point-to-grid sums run block by
+// block in a fixed order (mpm/state.hpp), so the thread count cannot change any rounding.
 #include <gtest/gtest.h>
 #include <omp.h>
 
