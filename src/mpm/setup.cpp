@@ -326,9 +326,10 @@ State build_state(const case_file::Case& c) {
   });
   // Blocks cover the nodes (and so every point inside the ghost layer) along y and z.
   Blocks& blocks = s.blocks;
-  blocks.strips = s.layout.nodes[1] / Blocks::kBlockCells + 2;
+  const int strips = s.layout.nodes[1] / Blocks::kBlockCells + 2;
   const int slabs = s.layout.nodes[2] / Blocks::kBlockCells + 2;
-  blocks.per_colour = static_cast<std::size_t>((blocks.strips + 1) / 2) * ((slabs + 1) / 2);
+  blocks.row = static_cast<std::size_t>(strips + 1) / 2;
+  blocks.per_colour = blocks.row * static_cast<std::size_t>((slabs + 1) / 2);
   blocks.order.resize(total);
   blocks.block_of.resize(total);
   blocks.begin.resize(Blocks::kColours * blocks.per_colour + 1);

@@ -61,7 +61,7 @@ struct Blocks {
   // The points are counted in this many fixed chunks, in parallel: the order does not depend on
   // the threads.
   static constexpr int kSortChunks = 16;
-  int strips = 0;                       // blocks along y
+  std::size_t row = 0;                  // blocks of one colour along y
   std::size_t per_colour = 0;           // blocks of each colour
   std::vector<std::uint32_t> order;     // point indices, by block, ascending within a block
   std::vector<std::size_t> begin;       // block b is order[begin[b] .. begin[b+1]), by colour

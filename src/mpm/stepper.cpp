@@ -26,12 +26,11 @@ void bin_points_into_blocks(State& s) {
   const std::size_t blocks = B.begin.size() - 1;
   const double inv = 1.0 / (L.h * Blocks::kBlockCells);
   const bool flat = L.nodes[1] == 1;  // r-z: one layer of nodes in y
-  const std::size_t row = static_cast<std::size_t>(B.strips + 1) / 2;
   auto block_of = [&](std::size_t p) {
     const auto z = static_cast<std::size_t>((P.position[2][p] - L.origin[2]) * inv);
     const auto y = flat ? 0 : static_cast<std::size_t>((P.position[1][p] - L.origin[1]) * inv);
     const std::size_t colour = (z % 2) * 2 + y % 2;
-    return static_cast<std::uint32_t>(colour * B.per_colour + (z / 2) * row + y / 2);
+    return static_cast<std::uint32_t>(colour * B.per_colour + (z / 2) * B.row + y / 2);
   };
   auto chunk_begin = [&](long c) { return static_cast<std::size_t>(n * c / Blocks::kSortChunks); };
 #pragma omp parallel for schedule(static)
