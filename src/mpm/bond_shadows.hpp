@@ -37,7 +37,8 @@ class BondShadows {
   void clear_sums(const ContactNodes& c);
   void add_to_sums(std::size_t p, std::size_t f, double w) {
     const std::int32_t col = column_[p];
-    for (std::size_t k = 0; k < laws_.size(); ++k) bond_sum_[k][f] += bond_[k][col] * w;
+    for (std::size_t k = 0; k < laws_.size(); ++k)
+      add_bond_share(bond_sum_[k][f], bond_[k][col], w);
   }
   // Whether shadow k's nodal D_bond (eq 4.7) holds at some pair of bodies at a contact node this
   // step: from then on its run differs from this one.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -119,6 +120,18 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // momenta by equal and opposite amounts, and their forces by the same over dt.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
                      ContactResult& result);
+
+// Adds a surface point's share D_bond N_I(x_p) to an entry's sum of eq 4.6. The run's sums and a
+// bond family's shadows of them (mpm/bond_shadows.hpp) both add through here, so that, with
+// multiply-adds fused in the solver (CMakeLists.txt), a shadow rounds exactly as the run it
+// stands for: one fused rounding where the processor has FMA, two roundings where it has not.
+inline void add_bond_share(double& sum, double bond, double weight) {
+#ifdef __FMA__
+  sum = std::fma(bond, weight, sum);
+#else
+  sum += bond * weight;
+#endif
+}
 
 // Eqs 4.6-4.7: the pair's global nodal bonding parameter, the mean of the two bodies' nodal
 // values, each sum_p D_bond N_I / n_sp over its surface points covering the node.

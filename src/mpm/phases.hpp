@@ -157,7 +157,7 @@ void gather_contact_points(State& s) {
       const int e = cn.find(slot, b);
       if (bonding && P.surface[p]) {
         const std::size_t f = ContactNodes::flat(slot, e);
-        cn.bond_sum[f] += P.bond[p] * w;
+        add_bond_share(cn.bond_sum[f], P.bond[p], w);
         ++cn.surface_count[f];
         if (shadowing) shadows.add_to_sums(p, f, w);
       }
