@@ -329,11 +329,14 @@ void update_point_velocities_and_remap(State& s) {
   });
 }
 
-// Steps 9-11 (eqs 3.34-3.36, Appendix A) for the points of one body: velocity gradient from the
-// nodal velocities, density, artificial viscosity, the material's stress update; then the
-// position update. Called by every thread of a parallel region, which shares out the points;
-// returns the largest c + |v| of the calling thread's points.
+// Steps 9-11 (eqs 3.34-3.36, Appendix A) for batches [first, end) of the step's batches of
+// points (each body's points in batches of materials::kBatchPoints, body after body): velocity
+// gradient from the nodal velocities, density, artificial viscosity, the material's stress
+// update; then the position update. Threads may call it for disjoint ranges at once; returns the
+// largest c + |v| of the range's points.
 template <class Shape, bool Axisymmetric>
-double update_body_stress(State& s, const BodyRange& body);
+double update_stress_share(State& s, std::size_t first, std::size_t end);
+// The number of those batches.
+std::size_t stress_batch_count(const State& s);
 
 }  // namespace coldspray::mpm

@@ -19,6 +19,7 @@
 #include "mpm/grid.hpp"
 #include "mpm/points.hpp"
 #include "mpm/stencil.hpp"
+#include "mpm/work_shares.hpp"
 
 namespace coldspray::mpm {
 
@@ -91,6 +92,7 @@ struct State {
   std::vector<AbsorbingPoint> absorbing;
   std::array<std::vector<double>, 3> external_force;  // per point, N (dashpots)
   Blocks blocks;
+  WorkShares stress_shares;  // the threads' shares of the stress update
   // Each point's stencil at the step's positions: evaluated once, by the particle-to-grid
   // mapping, and read by every later phase of the step, as the points move only at its end
   // (step 11). One vector per shape function and geometry; setup sizes the run's own.

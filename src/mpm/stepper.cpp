@@ -1,6 +1,7 @@
 #include "mpm/stepper.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -135,14 +136,20 @@ void musl_from_contact(State& s) {
   update_point_velocities_and_remap<Shape, Axisymmetric>(s);  // steps 7-8, eqs 3.32-3.33
   apply_node_constraints(s, /*force_too=*/false);             //   with the essential BCs
   compute_nodal_velocities(s, /*with_forces=*/false);         //   v = p/m of the re-map
-  // Steps 9-11, eqs 3.34-3.36 and Appendix A. One parallel region for all bodies: points that
-  // flow plastically cost several flow-stress evaluations, and they gather where bodies touch.
-  // Points are seeded upward in z, so that is the start of a particle's points and the end of
-  // its substrate's, and the threads' shares even out over the bodies together.
+  // Steps 9-11, eqs 3.34-3.36 and Appendix A, in one parallel region for all bodies: each thread
+  // takes a contiguous share of the bodies' batches of points, and the shares follow the
+  // threads' times (mpm/work_shares.hpp).
+  WorkShares& shares = s.stress_shares;
+  shares.prepare(omp_get_max_threads(), stress_batch_count(s));
   double max_speed = 0.0;
 #pragma omp parallel reduction(max : max_speed)
-  for (const BodyRange& body : s.bodies)
-    max_speed = std::max(max_speed, update_body_stress<Shape, Axisymmetric>(s, body));
+  for (int k = omp_get_thread_num(); k < shares.shares(); k += omp_get_num_threads()) {
+    const double start = omp_get_wtime();
+    max_speed = std::max(max_speed, update_stress_share<Shape, Axisymmetric>(s, shares.first(k),
+                                                                             shares.first(k + 1)));
+    shares.record(k, omp_get_wtime() - start);
+  }
+  shares.rebalance();
   s.max_signal_speed = max_speed;
   account_absorbed_work(s);
   s.time += s.dt;  // step 12: the grid is reset

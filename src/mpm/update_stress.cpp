@@ -40,16 +40,18 @@ void check_point(const State& s, std::size_t p, Fault& fault) {
   }
 }
 
-}  // namespace
+std::size_t batch_count(const BodyRange& body) {
+  return (body.end - body.begin + materials::kBatchPoints - 1) / materials::kBatchPoints;
+}
 
-// Steps 9-11 for one body (eqs 3.34-3.36, Appendix A), in batches of points that the material
-// update takes together (materials/stress_update_lanes.hpp). Batches start at fixed offsets from
-// the body's first point and a short last batch is padded with copies of its first point, so a
-// point's result depends neither on the thread count nor on its neighbours. Called by every
-// thread of a parallel region, body after body: a thread that is done with its share of one body
-// goes on to the next without waiting, and returns the largest c + |v| of the points it took.
+// Steps 9-11 for batches [first, end) of one body (eqs 3.34-3.36, Appendix A): points that the
+// material update takes together (materials/stress_update_lanes.hpp). Batches start at fixed
+// offsets from the body's first point and a short last batch is padded with copies of its first
+// point, so a point's result depends neither on the threads nor on its neighbours. Returns the
+// largest c + |v| of the points.
 template <class Shape, bool Axisymmetric>
-double update_body_stress(State& s, const BodyRange& body) {
+double update_body_stress(State& s, const BodyRange& body, std::size_t first_batch,
+                          std::size_t end_batch) {
   using materials::kBatchPoints;
   Points& P = s.points;
   const double dt = s.dt;
@@ -125,11 +127,8 @@ double update_body_stress(State& s, const BodyRange& body) {
       return P.sound_speed[p] + speed;
     };
 
-    const long batches =
-        static_cast<long>((body.end - body.begin + kBatchPoints - 1) / kBatchPoints);
-#pragma omp for schedule(static) nowait
-    for (long batch = 0; batch < batches; ++batch) {
-      const std::size_t first = body.begin + static_cast<std::size_t>(batch) * kBatchPoints;
+    for (std::size_t batch = first_batch; batch < end_batch; ++batch) {
+      const std::size_t first = body.begin + batch * kBatchPoints;
       const int count = static_cast<int>(std::min<std::size_t>(kBatchPoints, body.end - first));
       materials::StepKinematics k[kBatchPoints];
       materials::PointState state[kBatchPoints];
@@ -150,9 +149,32 @@ double update_body_stress(State& s, const BodyRange& body) {
   return max_speed;
 }
 
-template double update_body_stress<LinearShape, false>(State&, const BodyRange&);
-template double update_body_stress<LinearShape, true>(State&, const BodyRange&);
-template double update_body_stress<GimpShape, false>(State&, const BodyRange&);
-template double update_body_stress<GimpShape, true>(State&, const BodyRange&);
+}  // namespace
+
+template <class Shape, bool Axisymmetric>
+double update_stress_share(State& s, std::size_t first, std::size_t end) {
+  double max_speed = 0.0;
+  std::size_t offset = 0;  // the body's first batch in the step's sequence
+  for (const BodyRange& body : s.bodies) {
+    const std::size_t batches = batch_count(body);
+    const std::size_t lo = std::max(first, offset), hi = std::min(end, offset + batches);
+    if (lo < hi)
+      max_speed = std::max(
+          max_speed, update_body_stress<Shape, Axisymmetric>(s, body, lo - offset, hi - offset));
+    offset += batches;
+  }
+  return max_speed;
+}
+
+std::size_t stress_batch_count(const State& s) {
+  std::size_t batches = 0;
+  for (const BodyRange& body : s.bodies) batches += batch_count(body);
+  return batches;
+}
+
+template double update_stress_share<LinearShape, false>(State&, std::size_t, std::size_t);
+template double update_stress_share<LinearShape, true>(State&, std::size_t, std::size_t);
+template double update_stress_share<GimpShape, false>(State&, std::size_t, std::size_t);
+template double update_stress_share<GimpShape, true>(State&, std::size_t, std::size_t);
 
 }  // namespace coldspray::mpm
