@@ -127,14 +127,23 @@ void update_point(const Models& models, const StepKinematics& k, const UpdateOpt
     st.shear_modulus = models.shear_modulus_at(st.temperature);
 }
 
+// The longitudinal (P-wave) modulus K_t + 4G/3 at the point's state.
 template <class Models>
-double point_wave_speed(const Models& models, const PointState& st) {
-  const double rho = models.material.density / st.J;
-  const double G = st.shear_modulus;
+double longitudinal_modulus(const Models& models, const PointState& st) {
   // K_t floored at zero: in deep tension the Gruneisen term can make it negative, and the
   // time-step bound then rests on the shear wave alone.
   const double K = std::max(models.tangent_bulk_modulus(st.J, st.energy), 0.0);
-  return std::sqrt((K + 4.0 / 3.0 * G) / rho);
+  return K + 4.0 / 3.0 * st.shear_modulus;
+}
+
+// sqrt(M / rho), rho = rho0 / J: plain arithmetic, so that a loop over points vectorises it.
+inline double wave_speed_of(double longitudinal_modulus, double rho0, double J) {
+  return std::sqrt(longitudinal_modulus / (rho0 / J));
+}
+
+template <class Models>
+double point_wave_speed(const Models& models, const PointState& st) {
+  return wave_speed_of(longitudinal_modulus(models, st), models.material.density, st.J);
 }
 
 }  // namespace coldspray::materials

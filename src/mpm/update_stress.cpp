@@ -95,7 +95,7 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
 
   double max_speed = 0.0;
   materials::visit_models(body.material, [&](const auto& models) {
-    // After the material update: the point's work, wave speed, bonding and position.
+    // After the material update: the point's work, bonding and position.
     auto complete_point = [&](std::size_t p, const materials::StepKinematics& k,
                               const materials::PointState& state) {
       const double eqps_before = P.eqps[p];
@@ -103,7 +103,6 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
       if (state.eqps > eqps_before)
         P.plastic_work[p] +=
             state.flow_stress * (state.eqps - eqps_before) * P.volume0[p] * state.J;
-      P.sound_speed[p] = materials::point_wave_speed(models, state);
       // Eqs 4.5 / 4.16a: D_bond grows at surface points in contact (the set S); the run's own,
       // or that of each bond law it shadows.
       if (P.touching[p]) {
@@ -121,10 +120,6 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
         P.half_width[d][p] *= 1.0 + k.strain_increment(d, d);
       }
       check_point(s, p, s.fault);
-      const double speed =
-          std::sqrt(P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
-                    P.velocity[2][p] * P.velocity[2][p]);
-      return P.sound_speed[p] + speed;
     };
 
     for (std::size_t batch = first_batch; batch < end_batch; ++batch) {
@@ -142,8 +137,26 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
         }
       }
       materials::update_points(models, k, materials::UpdateOptions{}, state);
-      for (int i = 0; i < count; ++i)
-        max_speed = std::max(max_speed, complete_point(first + i, k[i], state[i]));
+      for (int i = 0; i < count; ++i) complete_point(first + i, k[i], state[i]);
+      // The wave speeds c and speeds |v|, the batch's square roots and divisions taken four at
+      // once (the padding lanes repeat the first point).
+      double modulus[kBatchPoints], J[kBatchPoints], v2[kBatchPoints];
+      for (int i = 0; i < kBatchPoints; ++i) {
+        const std::size_t p = first + (i < count ? i : 0);
+        modulus[i] = materials::longitudinal_modulus(models, state[i]);
+        J[i] = state[i].J;
+        v2[i] = P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
+                P.velocity[2][p] * P.velocity[2][p];
+      }
+      double c[kBatchPoints], speed[kBatchPoints];
+      for (int i = 0; i < kBatchPoints; ++i) {
+        c[i] = materials::wave_speed_of(modulus[i], models.material.density, J[i]);
+        speed[i] = std::sqrt(v2[i]);
+      }
+      for (int i = 0; i < count; ++i) {
+        P.sound_speed[first + i] = c[i];
+        max_speed = std::max(max_speed, c[i] + speed[i]);
+      }
     }
   });
   return max_speed;
