@@ -85,7 +85,7 @@ struct State {
   GridLayout layout;
   GridFields grid;
   std::vector<std::uint8_t> constraint;    // NodeConstraint bits per node
-  std::vector<std::uint8_t> near_contact;  // per cell: a contact node is within its stencil
+  std::vector<std::uint8_t> near_contact;  // per node: a stencil based there reaches contact
 
   Points points;
   std::vector<BodyRange> bodies;

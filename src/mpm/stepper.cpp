@@ -60,23 +60,26 @@ void bin_points_into_blocks(State& s) {
   }
 }
 
-// The nodes two or more bodies reach get a contact slot; the cells whose points can reach such
-// a node are flagged, so the body-wise mapping skips every other point.
+// The nodes two or more bodies reach get a contact slot. The stencils that reach such a node are
+// flagged by their lowest node (near_contact, phases.hpp), so the phases that work at contact
+// nodes skip every other point, and the rest read the grid's velocities without looking up.
+template <class Shape, bool Axisymmetric>
 void find_contact_nodes(State& s) {
+  constexpr int reach = Stencil<Shape, Axisymmetric>::S - 1;
+  constexpr int reach_y = Stencil<Shape, Axisymmetric>::SY - 1;
   s.contact.clear();
   std::fill(s.near_contact.begin(), s.near_contact.end(), 0);
   const GridLayout& L = s.layout;
-  const int reach_y = L.axisymmetric ? 0 : 1;
   for (std::size_t n = 0; n < L.node_count(); ++n) {
     if (s.grid.reached_by[n] != GridFields::kManyBodies) continue;
     s.grid.contact_slot[n] = s.contact.add(n);
     const int i = static_cast<int>(n % L.nodes[0]);
     const int j = static_cast<int>((n / L.nodes[0]) % L.nodes[1]);
     const int k = static_cast<int>(n / (static_cast<std::size_t>(L.nodes[0]) * L.nodes[1]));
-    for (int ck = std::max(k - 2, 0); ck <= std::min(k + 1, L.nodes[2] - 1); ++ck)
-      for (int cj = std::max(j - 2 * reach_y, 0); cj <= std::min(j + reach_y, L.nodes[1] - 1); ++cj)
-        for (int ci = std::max(i - 2, 0); ci <= std::min(i + 1, L.nodes[0] - 1); ++ci)
-          s.near_contact[L.index(ci, cj, ck)] = 1;
+    for (int bk = std::max(k - reach, 0); bk <= k; ++bk)
+      for (int bj = std::max(j - reach_y, 0); bj <= j; ++bj)
+        for (int bi = std::max(i - reach, 0); bi <= i; ++bi)
+          s.near_contact[L.index(bi, bj, bk)] = 1;
   }
 }
 
@@ -116,7 +119,7 @@ void musl_to_contact(State& s) {
   s.grid.clear();
   apply_absorbing_dashpots(s);                          // external force, eq 3.46
   map_points_to_grid<Shape, Axisymmetric>(s);           // steps 1-2, eqs 3.23-3.27
-  find_contact_nodes(s);                                // multi-mesh at contact nodes
+  find_contact_nodes<Shape, Axisymmetric>(s);           // multi-mesh at contact nodes
   map_bodies_to_contact_nodes<Shape, Axisymmetric>(s);  //   body-wise m, p, f, grad m
   integrate_grid_momentum(s);                           // step 3, eq 3.28
   choose_contact_normals(s.contact, s.contact_rule,     // step 4, eq 3.30

@@ -64,13 +64,14 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
     // in registers, where an Eigen matrix captured by the loop stayed on the stack.)
     double L[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     double radial_velocity = 0.0;
-    st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
-      const NodeView v = node_view(s, n, b);
-      const double grad[3] = {gx, gy, gz};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) L[i][j] += v.v[i] * grad[j];
-      radial_velocity += w * v.v[0];
-    });
+    for_each_node_view(
+        s, st, near_contact(s, st), b,
+        [&](std::size_t, double w, double gx, double gy, double gz, const NodeView& v) {
+          const double grad[3] = {gx, gy, gz};
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) L[i][j] += v.v[i] * grad[j];
+          radial_velocity += w * v.v[0];
+        });
     // In r-z the hoop strain rate is v_r / r.
     if constexpr (Axisymmetric) L[1][1] = radial_velocity / P.position[0][p];
 
