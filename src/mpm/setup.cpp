@@ -1,6 +1,7 @@
 #include "mpm/setup.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "geometry/seeding.hpp"
 #include "materials/stress_update.hpp"
 #include "mpm/material_state.hpp"
+#include "mpm/phases.hpp"
 #include "mpm/stencil.hpp"
 
 namespace coldspray::mpm {
@@ -334,6 +336,8 @@ State build_state(const case_file::Case& c) {
   blocks.block_of.resize(total);
   blocks.begin.resize(Blocks::kColours * blocks.per_colour + 1);
   blocks.cursor.resize(Blocks::kSortChunks * (blocks.begin.size() - 1));
+  // Sized here so that steps allocate only if the thread count changes between them.
+  s.stress_shares.prepare(omp_get_max_threads(), stress_batch_count(s));
 
   s.contact_rule.normal = c.contact.normal;
   s.contact_rule.friction = c.contact.friction;
