@@ -254,6 +254,7 @@ struct NodeView {
   double dv_contact[3];  // correction/m (0 away from contact nodes)
 };
 
+// The grid's nodal velocities at node n: what every body sees away from contact nodes.
 inline NodeView grid_node_view(const State& s, std::size_t n) {
   NodeView v;
   const NodeMotion& motion = s.grid.motion[n];
@@ -287,7 +288,8 @@ inline NodeView node_view(const State& s, std::size_t n, int b) {
 // grid's without looking each node up among the contact nodes. (Inlined: called out of line, the
 // point's sums that f adds to went through memory and the re-map took 10 % longer.)
 template <class Stencil, class F>
-[[gnu::always_inline]] inline void for_each_node_view(const State& s, const Stencil& st, bool near, int b, F&& f) {
+[[gnu::always_inline]] inline void for_each_node_view(const State& s, const Stencil& st, bool near,
+                                                      int b, F&& f) {
   if (near)
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       f(n, w, gx, gy, gz, node_view(s, n, b));
