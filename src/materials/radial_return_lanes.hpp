@@ -15,13 +15,14 @@
 
 namespace coldspray::materials {
 
-// Lane i: trial stress trial[i] > 0, 3G = three_G[i] > 0, guess[i] as for consistent_return.
+// Lane i: trial stress trial[i] > 0, 3G = three_G[i] > 0, guess[i] and slope[i] as for
+// consistent_return.
 // `flow(x)` gives the four lanes' flow stresses at increments x; `scalar_return(i)` is
 // consistent_return of lane i alone.
 template <class FlowLanes, class ScalarReturn>
 COLDSPRAY_SIMD_TARGET void consistent_return_lanes(simd::Doubles trial, simd::Doubles three_G,
-                                                   simd::Doubles guess, FlowLanes&& flow,
-                                                   ScalarReturn&& scalar_return,
+                                                   simd::Doubles guess, simd::Doubles slope,
+                                                   FlowLanes&& flow, ScalarReturn&& scalar_return,
                                                    PlasticIncrement (&result)[simd::kLanes]) {
   using simd::Doubles;
   using simd::Mask;
@@ -43,8 +44,11 @@ COLDSPRAY_SIMD_TARGET void consistent_return_lanes(simd::Doubles trial, simd::Do
 
   // Secant steps from the guess, each evaluation narrowing the bracket.
   // The second point as second_secant_point's.
+  const Mask newton = (slope > three_G) & (slope < __builtin_inf());  // usable_slope
   const Doubles largest_offset = kSecantOffset * x0;
-  Doubles x1 = x0 + simd::min(simd::max(0.5 * f0 / three_G, -largest_offset), largest_offset);
+  Doubles x1 = newton
+                   ? x0 + simd::max(f0 / slope, -0.5 * x0)
+                   : x0 + simd::min(simd::max(0.5 * f0 / three_G, -largest_offset), largest_offset);
   for (;;) {
     const Mask active = warm & (best_residual > tolerance) & (evaluations < kSecantMaxEvaluations) &
                         (x1 > a) & (x1 < b);
@@ -62,6 +66,7 @@ COLDSPRAY_SIMD_TARGET void consistent_return_lanes(simd::Doubles trial, simd::Do
     b = (active & ~above) ? x : b;
     evaluations = active ? evaluations + 1.0 : evaluations;
     const Doubles x2 = x - fx * (x - x0) / (fx - f0);
+    slope = (active & (x != x0)) ? -(fx - f0) / (x - x0) : slope;
     x0 = active ? x : x0;
     f0 = active ? fx : f0;
     x1 = active ? x2 : x1;
@@ -74,9 +79,9 @@ COLDSPRAY_SIMD_TARGET void consistent_return_lanes(simd::Doubles trial, simd::Do
   for (int i = 0; i < simd::kLanes; ++i) {
     const int n = static_cast<int>(evaluations[i]);
     if (elastic[i])
-      result[i] = {0.0, flow_first[i], n};
+      result[i] = {0.0, flow_first[i], n, slope[i]};
     else if (converged[i])
-      result[i] = {best_x[i], best_flow[i], n};
+      result[i] = {best_x[i], best_flow[i], n, slope[i]};
     else
       result[i] = scalar_return(i);
   }

@@ -16,9 +16,12 @@ struct PointState {
   Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();  // Cauchy stress, Pa, tension positive
   double eqps = 0.0;                                 // equivalent plastic strain
   double eqps_rate = 0.0;                            // its rate over the last step, 1/s
-  double temperature = 298.0;                        // K
-  double energy = 0.0;  // internal energy per reference volume E, J/m^3 (eqs 3.39-3.41)
-  double J = 1.0;       // V/V0 = rho0/rho
+  // -df/dx of the last step's return near its root, Pa (radial_return.hpp): with eqps_rate, the
+  // next return's starting point. 0: none yet.
+  double return_slope = 0.0;
+  double temperature = 298.0;  // K
+  double energy = 0.0;         // internal energy per reference volume E, J/m^3 (eqs 3.39-3.41)
+  double J = 1.0;              // V/V0 = rho0/rho
   // G at `temperature`, Pa: set by initial_state and brought to the new temperature by every
   // update, whose elastic trial and wave speed use it (so the shear-modulus model is evaluated
   // once per step). A state must therefore come from initial_state or an earlier update.

@@ -68,14 +68,20 @@ ElasticTrial elastic_trial(const Models& models, const StepKinematics& k, const 
   return t;
 }
 
+// The return's starting point: the last step's increment, advanced along the last step's slope.
+inline double warm_start(const StepKinematics& k, const ElasticTrial& t, const PointState& st) {
+  return predicted_increment(t.trial, t.three_G, st.eqps_rate * k.dt, st.flow_stress,
+                             st.return_slope);
+}
+
 // (5) The yield check at the rate floor and the consistent return (eqs A6-A8 with sigma_y solved
-// in the step), started from the last step's rate.
+// in the step), started from the last step's increment and slope.
 template <class Models>
 PlasticIncrement plastic_increment(const Models& models, const StepKinematics& k,
                                    const ElasticTrial& t, const PointState& st) {
   const auto flow_stress = models.flow_stress_in_step(t.conditions);
   const double eqps = st.eqps;
-  return consistent_return(t.trial, t.three_G, st.eqps_rate * k.dt,
+  return consistent_return(t.trial, t.three_G, warm_start(k, t, st), st.return_slope,
                            [&](double x) { return flow_stress(eqps + x, x / k.dt); });
 }
 
@@ -89,6 +95,7 @@ void complete_update(const Models& models, const StepKinematics& k, const Update
   const double flow = inc.flow_stress;
   const double d_eqps = inc.eqps_increment;
   st.eqps_rate = d_eqps / k.dt;
+  st.return_slope = inc.residual_slope;
   if (d_eqps > 0.0) {
     s *= flow / t.trial;  // eq A8
     // (6) Adiabatic heating (eq 3.44) with the step's final flow stress.

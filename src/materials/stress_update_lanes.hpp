@@ -36,20 +36,21 @@ COLDSPRAY_SIMD_TARGET void update_lanes(const Models& models,
   const simd::Doubles melt_temperature = melt_temperature_lanes(models, density);
   ElasticTrial t[kBatchPoints];
   strength::Conditions conditions[kBatchPoints];
-  simd::Doubles trial, three_G, guess, eqps, dt;
+  simd::Doubles trial, three_G, guess, slope, eqps, dt;
   for (int i = 0; i < kBatchPoints; ++i) {
     t[i] = elastic_trial(models, k[i], st[i], melt_temperature[i]);
     conditions[i] = t[i].conditions;
     trial[i] = t[i].trial;
     three_G[i] = t[i].three_G;
-    guess[i] = st[i].eqps_rate * k[i].dt;
+    guess[i] = warm_start(k[i], t[i], st[i]);
+    slope[i] = st[i].return_slope;
     eqps[i] = st[i].eqps;
     dt[i] = k[i].dt;
   }
   const auto flow_stress = strength::prepare_lanes(models.strength_model, conditions);
   PlasticIncrement inc[kBatchPoints];
   consistent_return_lanes(
-      trial, three_G, guess,
+      trial, three_G, guess, slope,
       [&](simd::Doubles x) COLDSPRAY_SIMD_TARGET { return flow_stress(eqps + x, x / dt); },
       [&](int i) { return plastic_increment(models, k[i], t[i], st[i]); }, inc);
   simd::Doubles temperature;

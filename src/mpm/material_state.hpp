@@ -14,6 +14,7 @@ inline materials::PointState load_point_state(const Points& P, std::size_t p) {
       P.stress[kXZ][p], P.stress[kYZ][p], P.stress[kZZ][p];
   s.eqps = P.eqps[p];
   s.eqps_rate = P.eqps_rate[p];
+  s.return_slope = P.return_slope[p];
   s.temperature = P.temperature[p];
   s.energy = P.energy[p];
   s.J = P.J[p];
@@ -34,6 +35,7 @@ inline void store_point_state(const materials::PointState& s, Points& P, std::si
   P.stress[kXZ][p] = s.stress(0, 2);
   P.eqps[p] = s.eqps;
   P.eqps_rate[p] = s.eqps_rate;
+  P.return_slope[p] = s.return_slope;
   P.temperature[p] = s.temperature;
   P.energy[p] = s.energy;
   P.J[p] = s.J;

@@ -28,6 +28,7 @@ struct Points {
   std::array<std::vector<double>, 6> stress;  // Cauchy, Pa, tension positive
   std::vector<double> eqps;
   std::vector<double> eqps_rate;         // 1/s
+  std::vector<double> return_slope;      // Pa
   std::vector<double> temperature;       // K
   std::vector<double> energy;            // internal energy per reference volume, J/m^3
   std::vector<double> J;                 // V/V0

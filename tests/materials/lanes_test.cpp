@@ -78,38 +78,41 @@ TEST(MaterialsLanes, PtwLanesMatchesPtwStepLaneByLane) {
 // the guess.
 struct ReturnProblem {
   strength::Conditions c;
-  double trial, three_G, eqps, dt, guess;
+  double trial, three_G, eqps, dt, guess, slope;
 };
 
 COLDSPRAY_SIMD_TARGET std::array<PlasticIncrement, simd::kLanes> lanes_return(
     const ReturnProblem (&q)[simd::kLanes]) {
   strength::Conditions cs[simd::kLanes];
-  simd::Doubles trial, three_G, guess, eqps, dt;
+  simd::Doubles trial, three_G, guess, slope, eqps, dt;
   for (int l = 0; l < simd::kLanes; ++l) {
     cs[l] = q[l].c;
     trial[l] = q[l].trial;
     three_G[l] = q[l].three_G;
     guess[l] = q[l].guess;
+    slope[l] = q[l].slope;
     eqps[l] = q[l].eqps;
     dt[l] = q[l].dt;
   }
   const strength::PtwLanes flow(al_ptw_strength(), cs);
   PlasticIncrement out[simd::kLanes];
   consistent_return_lanes(
-      trial, three_G, guess,
+      trial, three_G, guess, slope,
       [&](simd::Doubles x) COLDSPRAY_SIMD_TARGET { return flow(eqps + x, x / dt); },
       [&](int l) {
         const strength::PtwStep f(al_ptw_strength(), q[l].c);
-        return consistent_return(q[l].trial, q[l].three_G, q[l].guess,
+        return consistent_return(q[l].trial, q[l].three_G, q[l].guess, q[l].slope,
                                  [&](double x) { return f(q[l].eqps + x, x / q[l].dt); });
       },
       out);
   return {out[0], out[1], out[2], out[3]};
 }
 
-// Across trial stresses from below yield to five times it, conditions from cold to melted and
-// guesses from none to far off (and past the bracket), every lane ends where the scalar return
-// does: the same increment to within the solve's tolerance, the same elastic/plastic decision.
+// Across trial stresses from below yield to five times it, conditions from cold to melted,
+// guesses from none to far off (and past the bracket) and last-step slopes from none, through
+// the root's own, to unusable ones, every lane ends where the scalar return does: the same
+// increment to within the solve's tolerance, the same elastic/plastic decision, and the same
+// slope for the next step.
 TEST(MaterialsLanes, LockStepReturnMatchesTheScalarReturn) {
   if (!simd::available()) GTEST_SKIP() << "no AVX2 on this processor";
   const strength::Ptw& p = al_ptw_strength();
@@ -121,12 +124,14 @@ TEST(MaterialsLanes, LockStepReturnMatchesTheScalarReturn) {
         const strength::Conditions c{T, 2750.0, 25e9, 1240.0};
         const double three_G = 3.0 * c.shear_modulus;
         const strength::PtwStep f(p, c);
-        const PlasticIncrement exact =
-            consistent_return(trial, three_G, 0.0, [&](double x) { return f(eqps + x, x / dt); });
-        for (double g : {0.0, 1.0, 1.01, 0.5, 10.0, 1e3})
-          problems.push_back({c, trial, three_G, eqps, dt, g * exact.eqps_increment});
-        problems.push_back({c, trial, three_G, eqps, dt, 2.0 * trial / three_G});  // past x_max
-        problems.push_back({c, trial, three_G, eqps, dt, 1e-9 * dt});  // yields only at rest
+        const PlasticIncrement exact = consistent_return(
+            trial, three_G, 0.0, 0.0, [&](double x) { return f(eqps + x, x / dt); });
+        for (double slope : {0.0, exact.residual_slope, 0.5 * three_G, 1e30, 1.0 / 0.0}) {
+          for (double g : {0.0, 1.0, 1.01, 0.5, 10.0, 1e3})
+            problems.push_back({c, trial, three_G, eqps, dt, g * exact.eqps_increment, slope});
+          problems.push_back({c, trial, three_G, eqps, dt, 2.0 * trial / three_G, slope});
+          problems.push_back({c, trial, three_G, eqps, dt, 1e-9 * dt, slope});  // yields at rest
+        }
       }
   while (problems.size() % simd::kLanes != 0) problems.push_back(problems.back());
 
@@ -139,9 +144,15 @@ TEST(MaterialsLanes, LockStepReturnMatchesTheScalarReturn) {
       const ReturnProblem& r = q[l];
       const strength::PtwStep f(p, r.c);
       const PlasticIncrement ref = consistent_return(
-          r.trial, r.three_G, r.guess, [&](double x) { return f(r.eqps + x, x / r.dt); });
+          r.trial, r.three_G, r.guess, r.slope, [&](double x) { return f(r.eqps + x, x / r.dt); });
       const double x = lanes[l].eqps_increment;
       EXPECT_EQ(x == 0.0, ref.eqps_increment == 0.0) << i + l;
+      // The slope is a difference quotient of the last two, nearly equal, evaluations: the
+      // vector functions' rounding moves it by up to 2e-4 here (it only starts the next return).
+      if (std::isfinite(ref.residual_slope)) {
+        EXPECT_NEAR(lanes[l].residual_slope, ref.residual_slope, 1e-3 * ref.residual_slope)
+            << i + l;
+      }
       EXPECT_NEAR(x, ref.eqps_increment, 1e-11 * r.trial / r.three_G) << i + l;
       EXPECT_NEAR(lanes[l].flow_stress, ref.flow_stress, 1e-11 * r.trial) << i + l;
       // On the yield surface of its own increment (or inside it, elastic).
