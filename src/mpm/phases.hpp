@@ -9,6 +9,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/double4.hpp"
 #include "materials/stress_update.hpp"
 #include "mpm/state.hpp"
 #include "mpm/stencil.hpp"
@@ -324,15 +325,15 @@ void update_point_velocities_and_remap(State& s) {
     const int b = P.body[p];
     const double m = P.mass[p];
     const bool near = near_contact(s, st);
-    double dv[3] = {0, 0, 0}, v[3] = {0, 0, 0}, dv_contact[3] = {0, 0, 0};
-    for_each_node_view(s, st, near, b,
-                       [&](std::size_t, double w, double, double, double, const NodeView& node) {
-                         for (int d = 0; d < 3; ++d) {
-                           dv[d] += w * node.dv[d];
-                           v[d] += w * node.v[d];
-                           dv_contact[d] += w * node.dv_contact[d];
-                         }
-                       });
+    // The sums as four-double vectors (last lane unused): three multiply-adds per node.
+    Double4 dv = {0.0, 0.0, 0.0, 0.0}, v = dv, dv_contact = dv;
+    for_each_node_view(
+        s, st, near, b, [&](std::size_t, double w, double, double, double, const NodeView& node) {
+          dv += w * Double4{node.dv[0], node.dv[1], node.dv[2], 0.0};
+          v += w * Double4{node.v[0], node.v[1], node.v[2], 0.0};
+          dv_contact +=
+              w * Double4{node.dv_contact[0], node.dv_contact[1], node.dv_contact[2], 0.0};
+        });
     double v_new[3];
     for (int d = 0; d < 3; ++d) {
       P.contact_work[p] += m * (P.velocity[d][p] + 0.5 * dv[d]) * dv_contact[d];

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "bonding/bond_law.hpp"
+#include "core/double4.hpp"
 #include "materials/model_dispatch.hpp"
 #include "materials/stress_update_lanes.hpp"
 #include "mpm/artificial_viscosity.hpp"
@@ -65,12 +66,11 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
     // a node costs three vector multiply-adds and the sums stay in registers. (As a 3x3 array
     // of scalars, they went through the stack, and one load reading them back had 9 % of
     // this function's samples.)
-    using Column = double __attribute__((vector_size(32)));
-    Column L0 = {0.0, 0.0, 0.0, 0.0}, L1 = L0, L2 = L0, v_N = L0;
+    Double4 L0 = {0.0, 0.0, 0.0, 0.0}, L1 = L0, L2 = L0, v_N = L0;
     for_each_node_view(
         s, st, near_contact(s, st), b,
         [&](std::size_t, double w, double gx, double gy, double gz, const NodeView& v) {
-          const Column v_I = {v.v[0], v.v[1], v.v[2], 0.0};
+          const Double4 v_I = {v.v[0], v.v[1], v.v[2], 0.0};
           L0 += v_I * gx;
           L1 += v_I * gy;
           L2 += v_I * gz;
