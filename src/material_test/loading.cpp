@@ -42,9 +42,7 @@ void check(const Loading& l) {
 PointState advance(const materials::Material& m, const materials::UpdateOptions& opt,
                    const PointState& start, const Matrix3d& L, double dt) {
   materials::StepKinematics k;
-  k.strain_increment = 0.5 * (L + L.transpose()) * dt;
-  k.spin_increment = 0.5 * (L - L.transpose()) * dt;
-  k.dt = dt;
+  k.set_velocity_gradient(L, dt);
   k.J_new = start.J * std::exp(L.trace() * dt);
   PointState next = start;
   materials::update_stress(m, k, opt, next);

@@ -8,14 +8,15 @@
 #include <Eigen/Core>
 
 #include "materials/material.hpp"
+#include "materials/symmetric_tensor.hpp"
 
 namespace coldspray::materials {
 
 // Everything the update needs to remember about a point between steps.
 struct PointState {
-  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();  // Cauchy stress, Pa, tension positive
-  double eqps = 0.0;                                 // equivalent plastic strain
-  double eqps_rate = 0.0;                            // its rate over the last step, 1/s
+  SymmetricTensor stress;  // Cauchy stress, Pa, tension positive
+  double eqps = 0.0;       // equivalent plastic strain
+  double eqps_rate = 0.0;  // its rate over the last step, 1/s
   // -df/dx of the last step's return near its root, Pa (radial_return.hpp): with eqps_rate, the
   // next return's starting point. 0: none yet.
   double return_slope = 0.0;
@@ -39,10 +40,17 @@ struct UpdateOptions {
 // The kinematics of the step, supplied by the solver: strain increment D*dt (symmetric),
 // spin increment W*dt (skew), the step dt, and J at the end of the step.
 struct StepKinematics {
-  Eigen::Matrix3d strain_increment = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d spin_increment = Eigen::Matrix3d::Zero();
+  SymmetricTensor strain_increment;
+  SkewTensor spin_increment;
   double dt = 0.0;
   double J_new = 1.0;
+
+  // D dt and W dt of a velocity gradient L held over dt: its symmetric and skew parts (eq 3.34).
+  void set_velocity_gradient(const Eigen::Matrix3d& L, double step) {
+    strain_increment = SymmetricTensor::of(0.5 * (L + L.transpose()) * step);
+    spin_increment = SkewTensor::of(0.5 * (L - L.transpose()) * step);
+    dt = step;
+  }
 };
 
 // Initial state of a stress-free point at temperature T: fills the diagnostics consistently.

@@ -53,13 +53,13 @@ ElasticTrial elastic_trial(const Models& models, const StepKinematics& k, const 
                            double melt_temperature) {
   ElasticTrial t;
   // (1) Jaumann rotation of sigma^n by the spin increment W dt (eq A2).
-  const SymmetricTensor rotated = jaumann_rotated(SymmetricTensor::of(st.stress), k.spin_increment);
+  const SymmetricTensor rotated = jaumann_rotated(st.stress, k.spin_increment);
   // (2) Pressure and deviator (eq A3); the trace is unchanged by (1), so this is p^n.
   t.p_old = -rotated.trace() / 3.0;
   t.s_rotated = rotated.plus_identity(t.p_old);
   // (3) Elastic trial deviator (eqs A1.3, A4), G at T^n.
   const double G = st.shear_modulus;
-  t.s = t.s_rotated.plus_scaled(2.0 * G, deviator(SymmetricTensor::of(k.strain_increment)));
+  t.s = t.s_rotated.plus_scaled(2.0 * G, deviator(k.strain_increment));
   // (4) Trial von Mises stress (eq A5).
   t.trial = t.s.von_mises();
   t.three_G = 3.0 * G;
@@ -108,14 +108,14 @@ void complete_update(const Models& models, const StepKinematics& k, const Update
   // the mid-step, then p^{n+1} solved implicitly with the energy it does.
   const double dJ = k.J_new - st.J;
   const double J_half = 0.5 * (st.J + k.J_new);
-  const SymmetricTensor d = SymmetricTensor::of(k.strain_increment);
+  const SymmetricTensor& d = k.strain_increment;
   const double deviatoric_work = 0.5 * (t.s_rotated.contract(d) + s.contract(d));
   const double energy_trial = st.energy + J_half * deviatoric_work - 0.5 * dJ * t.p_old;
   const double B = models.energy_coefficient();
   const double p = (models.reference_pressure(k.J_new) + B * energy_trial) / (1.0 + 0.5 * B * dJ);
   st.energy = energy_trial - 0.5 * dJ * p;
 
-  st.stress = s.matrix_plus_identity(-p);
+  st.stress = s.plus_identity(-p);
   st.J = k.J_new;
   st.flow_stress = flow;
   st.melt_temperature = t.conditions.melt_temperature;

@@ -1,6 +1,7 @@
 // Symmetric 3x3 tensors (stresses, strain increments) by their six independent components, in
-// the order xx, yy, zz, xy, yz, xz of mpm::Points' stress arrays. The constitutive update
-// (stress_update_kernel.hpp) works on its deviators in this form: no 3x3 products, and every
+// the order xx, yy, zz, xy, yz, xz of mpm::Points' stress arrays, and skew ones (spin
+// increments) by their three. The constitutive update (stress_update_kernel.hpp) keeps its
+// state and works in this form: no 3x3 products, half the memory of a matrix, and every
 // operation small enough to inline.
 #pragma once
 
@@ -12,23 +13,25 @@ namespace coldspray::materials {
 struct SymmetricTensor {
   double c[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
-  // Component (i, j) of the full matrix.
+  // Component (i, j) of the full matrix; (i, j) and (j, i) are the same component.
   static constexpr int index(int i, int j) {
     constexpr int kIndex[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
     return kIndex[i][j];
   }
   double operator()(int i, int j) const { return c[index(i, j)]; }
+  double& operator()(int i, int j) { return c[index(i, j)]; }
+  bool operator==(const SymmetricTensor&) const = default;
 
   // The upper triangle of a (symmetric) matrix.
   static SymmetricTensor of(const Eigen::Matrix3d& a) {
     return {{a(0, 0), a(1, 1), a(2, 2), a(0, 1), a(1, 2), a(0, 2)}};
   }
-  // This tensor plus t times the identity, as a full matrix.
-  Eigen::Matrix3d matrix_plus_identity(double t) const {
+  // The full matrix.
+  Eigen::Matrix3d matrix() const {
     Eigen::Matrix3d a;
-    a << c[0] + t, c[3], c[5],  //
-        c[3], c[1] + t, c[4],   //
-        c[5], c[4], c[2] + t;
+    a << c[0], c[3], c[5],  //
+        c[3], c[1], c[4],   //
+        c[5], c[4], c[2];
     return a;
   }
 
@@ -68,10 +71,20 @@ inline double von_mises_stress(const Eigen::Matrix3d& sigma) {
   return von_mises_stress(SymmetricTensor::of(sigma));
 }
 
+// A skew 3x3 tensor (spin increments) by the upper triangle of its matrix, W_xy, W_yz, W_xz;
+// W_ji = -W_ij.
+struct SkewTensor {
+  double c[3] = {0.0, 0.0, 0.0};
+
+  bool operator==(const SkewTensor&) const = default;
+  // The upper triangle of a skew matrix.
+  static SkewTensor of(const Eigen::Matrix3d& w) { return {{w(0, 1), w(1, 2), w(0, 2)}}; }
+};
+
 // sigma + sigma W^T + W sigma = sigma + W sigma + (W sigma)^T for a skew spin increment W: the
-// Jaumann rotation of eq A2, written out for the upper triangle (W's is all that is read).
-inline SymmetricTensor jaumann_rotated(const SymmetricTensor& sigma, const Eigen::Matrix3d& W) {
-  const double w01 = W(0, 1), w02 = W(0, 2), w12 = W(1, 2);
+// Jaumann rotation of eq A2, written out for the upper triangle.
+inline SymmetricTensor jaumann_rotated(const SymmetricTensor& sigma, const SkewTensor& W) {
+  const auto& [w01, w12, w02] = W.c;
   const auto& [xx, yy, zz, xy, yz, xz] = sigma.c;
   return {{xx + 2.0 * (w01 * xy + w02 * xz),  //
            yy + 2.0 * (w12 * yz - w01 * xy),  //

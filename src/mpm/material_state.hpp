@@ -7,11 +7,17 @@
 
 namespace coldspray::mpm {
 
+// Points' stress arrays and SymmetricTensor name the components in the same order.
+static_assert(materials::SymmetricTensor::index(0, 0) == kXX &&
+              materials::SymmetricTensor::index(1, 1) == kYY &&
+              materials::SymmetricTensor::index(2, 2) == kZZ &&
+              materials::SymmetricTensor::index(0, 1) == kXY &&
+              materials::SymmetricTensor::index(1, 2) == kYZ &&
+              materials::SymmetricTensor::index(0, 2) == kXZ);
+
 inline materials::PointState load_point_state(const Points& P, std::size_t p) {
   materials::PointState s;
-  s.stress << P.stress[kXX][p], P.stress[kXY][p], P.stress[kXZ][p],  //
-      P.stress[kXY][p], P.stress[kYY][p], P.stress[kYZ][p],          //
-      P.stress[kXZ][p], P.stress[kYZ][p], P.stress[kZZ][p];
+  for (int c = 0; c < 6; ++c) s.stress.c[c] = P.stress[c][p];
   s.eqps = P.eqps[p];
   s.eqps_rate = P.eqps_rate[p];
   s.return_slope = P.return_slope[p];
@@ -25,14 +31,8 @@ inline materials::PointState load_point_state(const Points& P, std::size_t p) {
   return s;
 }
 
-// The stress is symmetric; its upper triangle is stored.
 inline void store_point_state(const materials::PointState& s, Points& P, std::size_t p) {
-  P.stress[kXX][p] = s.stress(0, 0);
-  P.stress[kYY][p] = s.stress(1, 1);
-  P.stress[kZZ][p] = s.stress(2, 2);
-  P.stress[kXY][p] = s.stress(0, 1);
-  P.stress[kYZ][p] = s.stress(1, 2);
-  P.stress[kXZ][p] = s.stress(0, 2);
+  for (int c = 0; c < 6; ++c) P.stress[c][p] = s.stress.c[c];
   P.eqps[p] = s.eqps;
   P.eqps_rate[p] = s.eqps_rate;
   P.return_slope[p] = s.return_slope;

@@ -76,21 +76,20 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
           L2 += v_I * gz;
           if constexpr (Axisymmetric) v_N += v_I * w;
         });
-    double L[3][3] = {{L0[0], L1[0], L2[0]}, {L0[1], L1[1], L2[1]}, {L0[2], L1[2], L2[2]}};
-    // In r-z the hoop strain rate is v_r / r.
-    if constexpr (Axisymmetric) L[1][1] = v_N[0] / P.position[0][p];
+    // L(i, j) = Lj[i]. In r-z the hoop strain rate is v_r / r.
+    const double L11 = Axisymmetric ? v_N[0] / P.position[0][p] : L1[1];
 
+    // D dt and W dt (eq 3.34): the symmetric and skew parts of L dt.
     materials::StepKinematics k;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        k.strain_increment(i, j) = 0.5 * (L[i][j] + L[j][i]) * dt;
-        k.spin_increment(i, j) = 0.5 * (L[i][j] - L[j][i]) * dt;
-      }
+    k.strain_increment = {{L0[0] * dt, L11 * dt, L2[2] * dt, 0.5 * (L1[0] + L0[1]) * dt,
+                           0.5 * (L2[1] + L1[2]) * dt, 0.5 * (L2[0] + L0[2]) * dt}};
+    k.spin_increment = {
+        {0.5 * (L1[0] - L0[1]) * dt, 0.5 * (L2[1] - L1[2]) * dt, 0.5 * (L2[0] - L0[2]) * dt}};
     k.dt = dt;
     k.J_new = P.J[p] * (1.0 + k.strain_increment.trace());  // eq 3.36
 
     // Artificial bulk viscosity on the step's volumetric rate, and its work.
-    const double trace_L = L[0][0] + L[1][1] + L[2][2];
+    const double trace_L = L0[0] + L11 + L2[2];
     const double rho_new = body.material.density / k.J_new;
     const double q =
         bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], trace_L);
@@ -117,9 +116,9 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
                                 P.contact_normal[2][p]);
         const double d_eqps = state.eqps - eqps_before;
         if (s.bond_shadows.active())
-          s.bond_shadows.grow(p, state.stress, d_eqps, n, dt);
+          s.bond_shadows.grow(p, state.stress.matrix(), d_eqps, n, dt);
         else
-          P.bond[p] += bonding::bond_increment(s.bond_law, state.stress, d_eqps, n, dt);
+          P.bond[p] += bonding::bond_increment(s.bond_law, state.stress.matrix(), d_eqps, n, dt);
       }
       for (int d = 0; d < 3; ++d) {
         P.position[d][p] += P.displacement[d][p];

@@ -21,7 +21,8 @@ TEST(MaterialsLinearEos, PressureAndEnergyBookkeeping) {
   for (int n = 1; n <= steps; ++n) {
     StepKinematics k;
     k.J_new = 1.0 - 0.05 * n / steps;
-    k.strain_increment = std::log(k.J_new / st.J) / 3.0 * Eigen::Matrix3d::Identity();
+    k.strain_increment =
+        SymmetricTensor::of(std::log(k.J_new / st.J) / 3.0 * Eigen::Matrix3d::Identity());
     k.dt = 1e-9;
     const PointState before = st;
     update_stress(m, k, {}, st);

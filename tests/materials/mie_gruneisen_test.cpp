@@ -70,7 +70,7 @@ TEST(MaterialsMieGruneisen, OneStepEnergyCouplingMatchesHandCalculation) {
   const Material m = testing::al_elastic();
   PointState st = initial_state(m, 298.0);
   StepKinematics k;
-  k.strain_increment = std::log(0.99) / 3.0 * Eigen::Matrix3d::Identity();
+  k.strain_increment = SymmetricTensor::of(std::log(0.99) / 3.0 * Eigen::Matrix3d::Identity());
   k.dt = 1e-9;
   k.J_new = 0.99;
   update_stress(m, k, {}, st);
@@ -79,8 +79,8 @@ TEST(MaterialsMieGruneisen, OneStepEnergyCouplingMatchesHandCalculation) {
   // 1/J - 1 at J = 0.99 is good to ~1e-14 relative (cancellation); the rest to roundoff.
   EXPECT_NEAR(st.pressure, p, 1e-13 * p);
   EXPECT_NEAR(st.energy, -0.5 * dJ * p, 1e-13 * p);
-  EXPECT_NEAR(-st.stress.trace() / 3.0, p, 1e-13 * p);
-  EXPECT_NEAR((st.stress + p * Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14 * p);
+  EXPECT_NEAR(-st.stress.matrix().trace() / 3.0, p, 1e-13 * p);
+  EXPECT_NEAR((st.stress.matrix() + p * Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-14 * p);
 }
 
 // Two steps of combined compression and shear, elastic, by hand: the deviatoric work enters
@@ -98,7 +98,7 @@ TEST(MaterialsMieGruneisen, EnergyCouplingWithShearMatchesHandCalculation) {
   Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
   for (const double J_new : {0.99, 0.98}) {
     StepKinematics k;
-    k.strain_increment = d;
+    k.strain_increment = SymmetricTensor::of(d);
     k.dt = 1e-9;
     k.J_new = J_new;
     update_stress(m, k, {}, st);
@@ -112,7 +112,8 @@ TEST(MaterialsMieGruneisen, EnergyCouplingWithShearMatchesHandCalculation) {
     J = J_new;
     EXPECT_NEAR(st.energy, E, 1e-13 * E);
     EXPECT_NEAR(st.pressure, p, 1e-13 * p);
-    EXPECT_NEAR((st.stress - (s - p * Eigen::Matrix3d::Identity())).norm(), 0.0, 1e-13 * p);
+    EXPECT_NEAR((st.stress.matrix() - (s - p * Eigen::Matrix3d::Identity())).norm(), 0.0,
+                1e-13 * p);
   }
 }
 
@@ -128,13 +129,14 @@ TEST(MaterialsMieGruneisen, AdiabaticCompressionMatchesFineIntegration) {
   for (int n = 1; n <= steps; ++n) {
     StepKinematics k;
     k.J_new = 1.0 + (J_end - 1.0) * n / steps;
-    k.strain_increment = std::log(k.J_new / st.J) / 3.0 * Eigen::Matrix3d::Identity();
+    k.strain_increment =
+        SymmetricTensor::of(std::log(k.J_new / st.J) / 3.0 * Eigen::Matrix3d::Identity());
     k.dt = 1e-9;
     const PointState before = st;
     update_stress(m, k, {}, st);
     const double work = -0.5 * (before.pressure + st.pressure) * (k.J_new - before.J);
     ASSERT_NEAR(st.energy - before.energy, work, 1e-9 * std::abs(work) + 1e-6) << n;
-    ASSERT_NEAR((st.stress + st.pressure * Eigen::Matrix3d::Identity()).norm(), 0.0,
+    ASSERT_NEAR((st.stress.matrix() + st.pressure * Eigen::Matrix3d::Identity()).norm(), 0.0,
                 1e-12 * st.pressure);
   }
   // RK4 on dE/dJ = -(A(J) + Gamma0 E), E(1) = 0, 1e5 steps.

@@ -43,14 +43,14 @@ PointState stressed_al_state(const Material& m) {
   Matrix3d s;
   s << 100, 30, -20, 30, -40, 10, -20, 10, -60;
   st.J = 0.98;
-  st.stress = 1e6 * s - al_A(0.98) * kI;
+  st.stress = SymmetricTensor::of(1e6 * s - al_A(0.98) * kI);
   st.pressure = al_A(0.98);
   return st;
 }
 
 StepKinematics spin_step(const Matrix3d& W) {
   StepKinematics k;
-  k.spin_increment = W;
+  k.spin_increment = SkewTensor::of(W);
   k.dt = 1e-9;
   k.J_new = 0.98;
   return k;
@@ -62,17 +62,17 @@ TEST(MaterialsStressUpdate, RotationIsObjectiveToSecondOrder) {
   const Material m = testing::al_elastic();
   const PointState start = stressed_al_state(m);
   const Vector3d axis = Vector3d(1, 2, 3).normalized();
-  const double s_norm = deviator(start.stress).norm();
+  const double s_norm = deviator(start.stress.matrix()).norm();
   double residual[2];
   for (int i = 0; i < 2; ++i) {
     const double h = 1e-3 / (1 << i);
     PointState st = start;
     update_stress(m, spin_step(h * skew(axis)), {}, st);
     const Matrix3d R = Eigen::AngleAxisd(h, axis).toRotationMatrix();
-    residual[i] = (st.stress - R * start.stress * R.transpose()).norm();
+    residual[i] = (st.stress.matrix() - R * start.stress.matrix() * R.transpose()).norm();
     EXPECT_LE(residual[i], 2.0 * h * h * s_norm);
     // First order is right: the rotation itself is ~h |s|, far above the residual.
-    EXPECT_GT((st.stress - start.stress).norm(), 0.5 * h * s_norm);
+    EXPECT_GT((st.stress.matrix() - start.stress.matrix()).norm(), 0.5 * h * s_norm);
   }
   EXPECT_NEAR(residual[0] / residual[1], 4.0, 0.05);
 }
@@ -83,7 +83,7 @@ TEST(MaterialsStressUpdate, RotationIsObjectiveToSecondOrder) {
 TEST(MaterialsStressUpdate, ManySmallRotationsPreserveInvariants) {
   const Material m = testing::al_elastic();
   PointState st = stressed_al_state(m);
-  const Matrix3d start = st.stress;
+  const Matrix3d start = st.stress.matrix();
   const Vector3d axis = Vector3d(1, 2, 3).normalized();
   const int steps = 40000;
   const double h = 2.5e-8;
@@ -91,12 +91,12 @@ TEST(MaterialsStressUpdate, ManySmallRotationsPreserveInvariants) {
   for (int n = 0; n < steps; ++n) update_stress(m, k, {}, st);
   const double p0 = al_A(0.98);
   EXPECT_NEAR(st.pressure, p0, 1e-14 * p0);
-  EXPECT_NEAR(-st.stress.trace() / 3.0, p0, 1e-14 * p0);
+  EXPECT_NEAR(-st.stress.matrix().trace() / 3.0, p0, 1e-14 * p0);
   const double vm0 = von_mises_of(start);
-  EXPECT_NEAR(von_mises_of(st.stress), vm0, 1e-10 * vm0);
+  EXPECT_NEAR(von_mises_of(st.stress.matrix()), vm0, 1e-10 * vm0);
   const Matrix3d R = Eigen::AngleAxisd(steps * h, axis).toRotationMatrix();
-  EXPECT_LE((st.stress - R * start * R.transpose()).norm(), 1e-9 * deviator(start).norm());
-  EXPECT_GT((st.stress - start).norm(), 1e-4 * deviator(start).norm());  // it did rotate
+  EXPECT_LE((st.stress.matrix() - R * start * R.transpose()).norm(), 1e-9 * deviator(start).norm());
+  EXPECT_GT((st.stress.matrix() - start).norm(), 1e-4 * deviator(start).norm());  // it did rotate
 }
 
 // Plastic steps land on the yield surface of their own final strain and rate, and satisfy the
@@ -113,17 +113,17 @@ TEST(MaterialsStressUpdate, ReturnLandsOnYieldSurfacePtw) {
     d(0, 0) = -1e-3;
     d(1, 1) = 4e-4;
     StepKinematics k;
-    k.strain_increment = d;
+    k.strain_increment = SymmetricTensor::of(d);
     k.dt = dt;
     k.J_new = st.J * std::exp(d.trace());
     const PointState before = st;
     update_stress(m, k, {}, st);
     const double rho = 2700.0 / k.J_new;
     const double G = mts_al(before.temperature);
-    const Matrix3d s_trial = deviator(before.stress) + 2.0 * G * deviator(d);
+    const Matrix3d s_trial = deviator(before.stress.matrix()) + 2.0 * G * deviator(d);
     const double trial = std::sqrt(1.5 * (s_trial.array() * s_trial.array()).sum());
     const double d_eqps = st.eqps - before.eqps;
-    const double vm = von_mises_of(st.stress);
+    const double vm = von_mises_of(st.stress.matrix());
     if (d_eqps == 0.0) {
       EXPECT_NEAR(vm, trial, 1e-12 * trial);
       continue;
@@ -134,7 +134,7 @@ TEST(MaterialsStressUpdate, ReturnLandsOnYieldSurfacePtw) {
     const double expected_flow = flow_stress(m, st.eqps, st.eqps_rate, before.temperature, rho);
     EXPECT_NEAR(st.flow_stress, expected_flow, 1e-12 * vm) << n;
     EXPECT_NEAR(vm, trial - 3.0 * G * d_eqps, 1e-10 * trial) << n;
-    EXPECT_NEAR((deviator(st.stress) / vm - s_trial / trial).norm(), 0.0, 1e-12) << n;
+    EXPECT_NEAR((deviator(st.stress.matrix()) / vm - s_trial / trial).norm(), 0.0, 1e-12) << n;
     EXPECT_GT(st.temperature, before.temperature);
   }
   EXPECT_GT(plastic_steps, 50);
@@ -149,15 +149,15 @@ TEST(MaterialsStressUpdate, ReturnLandsOnYieldSurfaceJohnsonCook) {
     Matrix3d d = Matrix3d::Zero();
     d(0, 2) = d(2, 0) = 1.5e-3;
     StepKinematics k;
-    k.strain_increment = d;
+    k.strain_increment = SymmetricTensor::of(d);
     k.dt = dt;
     const PointState before = st;
     update_stress(m, k, {}, st);
-    const Matrix3d s_trial = deviator(before.stress) + 2.0 * 46e9 * d;
+    const Matrix3d s_trial = deviator(before.stress.matrix()) + 2.0 * 46e9 * d;
     const double trial = std::sqrt(1.5 * (s_trial.array() * s_trial.array()).sum());
     const double d_eqps = st.eqps - before.eqps;
     ASSERT_GT(d_eqps, 0.0) << n;
-    const double vm = von_mises_of(st.stress);
+    const double vm = von_mises_of(st.stress.matrix());
     EXPECT_NEAR(vm, st.flow_stress, 1e-12 * vm);
     EXPECT_NEAR(st.flow_stress, flow_stress(m, st.eqps, st.eqps_rate, before.temperature, 8930.0),
                 1e-12 * vm);
@@ -215,13 +215,13 @@ TEST(MaterialsStressUpdate, PlasticFlowIsIncompressible) {
     update_stress(plastic, k, {}, a);
     update_stress(elastic, k, {}, b);
     ASSERT_EQ(a.J, k.J_new);
-    const double scale = a.stress.norm();
-    ASSERT_NEAR((a.stress + a.pressure * kI).trace(), 0.0, 1e-13 * scale) << n;
+    const double scale = a.stress.matrix().norm();
+    ASSERT_NEAR((a.stress.matrix() + a.pressure * kI).trace(), 0.0, 1e-13 * scale) << n;
     ASSERT_NEAR(a.pressure, b.pressure, 1e-13 * std::abs(b.pressure)) << n;
     ASSERT_NEAR(a.pressure, 129e9 * (1.0 / k.J_new - 1.0), 4e-16 * 129e9 / k.J_new) << n;
   }
   EXPECT_GT(a.eqps, 0.005);
-  EXPECT_LT(von_mises_of(a.stress), von_mises_of(b.stress));
+  EXPECT_LT(von_mises_of(a.stress.matrix()), von_mises_of(b.stress.matrix()));
 }
 
 // Adiabatic heating (eq 3.44): over a simple-shear path (isochoric, rho = rho0) the temperature
@@ -235,9 +235,7 @@ TEST(MaterialsStressUpdate, HeatingEqualsPlasticWorkFraction) {
   const double dt = 1e-7;
   for (int n = 0; n < 500; ++n) {
     StepKinematics k;
-    k.strain_increment = 0.5 * (L + L.transpose()) * dt;
-    k.spin_increment = 0.5 * (L - L.transpose()) * dt;
-    k.dt = dt;
+    k.set_velocity_gradient(L, dt);
     k.J_new = 1.0;
     const PointState before = st;
     update_stress(m, k, {}, st);
@@ -319,9 +317,7 @@ TEST(MaterialsStressUpdate, ElasticSimpleShearWithSpin) {
   const double dt = 1e-8;
   for (int n = 0; n < 100; ++n) {
     StepKinematics k;
-    k.strain_increment = 0.5 * (L + L.transpose()) * dt;
-    k.spin_increment = 0.5 * (L - L.transpose()) * dt;
-    k.dt = dt;
+    k.set_velocity_gradient(L, dt);
     update_stress(m, k, {}, st);
   }
   const double gamma = 1e-3, G = 26e9;
@@ -333,7 +329,7 @@ TEST(MaterialsStressUpdate, ElasticSimpleShearWithSpin) {
 TEST(MaterialsStressUpdate, InitialStateFillsDiagnostics) {
   const Material m = testing::al_ptw();
   const PointState st = initial_state(m, 298.0);
-  EXPECT_EQ(st.stress, Matrix3d::Zero());
+  EXPECT_EQ(st.stress.matrix(), Matrix3d::Zero());
   EXPECT_EQ(st.J, 1.0);
   EXPECT_EQ(st.eqps, 0.0);
   EXPECT_EQ(st.temperature, 298.0);

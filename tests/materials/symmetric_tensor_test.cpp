@@ -32,9 +32,21 @@ TEST(MaterialsSymmetricTensor, RoundTripsTheUpperTriangle) {
   const SymmetricTensor s = SymmetricTensor::of(a);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) EXPECT_EQ(s(i, j), a(i, j)) << i << j;
-  EXPECT_EQ(s.matrix_plus_identity(0.0), a);
-  EXPECT_EQ(s.matrix_plus_identity(2.0), a + 2.0 * Matrix3d::Identity());
+  EXPECT_EQ(s.matrix(), a);
+  EXPECT_EQ(s.plus_identity(2.0).matrix(), a + 2.0 * Matrix3d::Identity());
   EXPECT_EQ(s.trace(), 5.5);
+  // Writing (i, j) writes (j, i).
+  SymmetricTensor t = s;
+  t(2, 0) = 9.0;
+  EXPECT_EQ(t(0, 2), 9.0);
+  EXPECT_EQ(t.c[SymmetricTensor::index(0, 2)], 9.0);
+}
+
+TEST(MaterialsSymmetricTensor, SkewTensorKeepsTheUpperTriangle) {
+  const SkewTensor w = SkewTensor::of(skew_sample());
+  EXPECT_EQ(w.c[0], skew_sample()(0, 1));
+  EXPECT_EQ(w.c[1], skew_sample()(1, 2));
+  EXPECT_EQ(w.c[2], skew_sample()(0, 2));
 }
 
 TEST(MaterialsSymmetricTensor, ContractionAndVonMisesMatchTheFullMatrices) {
@@ -54,7 +66,7 @@ TEST(MaterialsSymmetricTensor, ContractionAndVonMisesMatchTheFullMatrices) {
 TEST(MaterialsSymmetricTensor, JaumannRotationMatchesTheMatrixForm) {
   const Matrix3d sigma = symmetric_sample(), W = skew_sample();
   const Matrix3d full = sigma + sigma * W.transpose() + W * sigma;  // eq A2
-  const SymmetricTensor r = jaumann_rotated(SymmetricTensor::of(sigma), W);
+  const SymmetricTensor r = jaumann_rotated(SymmetricTensor::of(sigma), SkewTensor::of(W));
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) EXPECT_NEAR(r(i, j), full(i, j), 1e-14) << i << j;
 }
@@ -68,7 +80,7 @@ TEST(MaterialsSymmetricTensor, JaumannRotationOfUniaxialStressByHand) {
   W(1, 0) = -w;
   SymmetricTensor uniaxial;
   uniaxial.c[0] = 1.0;
-  const SymmetricTensor r = jaumann_rotated(uniaxial, W);
+  const SymmetricTensor r = jaumann_rotated(uniaxial, SkewTensor::of(W));
   EXPECT_EQ(r(0, 0), 1.0);
   EXPECT_EQ(r(0, 1), -w);
   EXPECT_EQ(r(1, 1), 0.0);
