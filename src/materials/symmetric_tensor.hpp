@@ -65,6 +65,10 @@ inline SymmetricTensor deviator(const SymmetricTensor& a) {
   return a.plus_identity(-a.trace() / 3.0);
 }
 
+// The pressure -tr(sigma)/3 of a stress, compression positive. After an update it is the EOS
+// pressure p^{n+1} to round-off: the update returns sigma = s - p I with s traceless (eq A3).
+inline double mean_pressure(const SymmetricTensor& sigma) { return -sigma.trace() / 3.0; }
+
 // The von Mises stress sqrt(3/2 s:s) of a stress (eq A5 on its deviator s).
 inline double von_mises_stress(const SymmetricTensor& sigma) { return deviator(sigma).von_mises(); }
 inline double von_mises_stress(const Eigen::Matrix3d& sigma) {

@@ -15,9 +15,17 @@ static_assert(materials::SymmetricTensor::index(0, 0) == kXX &&
               materials::SymmetricTensor::index(1, 2) == kYZ &&
               materials::SymmetricTensor::index(0, 2) == kXZ);
 
+inline materials::SymmetricTensor stress_at(const Points& P, std::size_t p) {
+  materials::SymmetricTensor sigma;
+  for (int c = 0; c < 6; ++c) sigma.c[c] = P.stress[c][p];
+  return sigma;
+}
+
+// The state the next update needs. Its diagnostics melt_temperature and pressure stay unset:
+// the update only writes them.
 inline materials::PointState load_point_state(const Points& P, std::size_t p) {
   materials::PointState s;
-  for (int c = 0; c < 6; ++c) s.stress.c[c] = P.stress[c][p];
+  s.stress = stress_at(P, p);
   s.eqps = P.eqps[p];
   s.eqps_rate = P.eqps_rate[p];
   s.return_slope = P.return_slope[p];
@@ -26,8 +34,6 @@ inline materials::PointState load_point_state(const Points& P, std::size_t p) {
   s.J = P.J[p];
   s.flow_stress = P.flow_stress[p];
   s.shear_modulus = P.shear_modulus[p];
-  s.melt_temperature = P.melt_temperature[p];
-  s.pressure = P.pressure[p];
   return s;
 }
 
@@ -41,8 +47,6 @@ inline void store_point_state(const materials::PointState& s, Points& P, std::si
   P.J[p] = s.J;
   P.flow_stress[p] = s.flow_stress;
   P.shear_modulus[p] = s.shear_modulus;
-  P.melt_temperature[p] = s.melt_temperature;
-  P.pressure[p] = s.pressure;
 }
 
 }  // namespace coldspray::mpm

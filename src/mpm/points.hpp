@@ -24,18 +24,18 @@ struct Points {
   // the material along each axis (the axis-aligned form of convected-domain GIMP).
   std::array<std::vector<double>, 3> half_width;
 
-  // Material state (materials::PointState, spread over arrays).
+  // Material state: what materials::PointState carries from step to step, spread over arrays.
+  // (Its diagnostics melt_temperature and pressure are not kept: the pressure is the stress's
+  // mean, materials::mean_pressure, and nothing reads the melt temperature.)
   std::array<std::vector<double>, 6> stress;  // Cauchy, Pa, tension positive
   std::vector<double> eqps;
-  std::vector<double> eqps_rate;         // 1/s
-  std::vector<double> return_slope;      // Pa
-  std::vector<double> temperature;       // K
-  std::vector<double> energy;            // internal energy per reference volume, J/m^3
-  std::vector<double> J;                 // V/V0
-  std::vector<double> flow_stress;       // Pa
-  std::vector<double> shear_modulus;     // Pa
-  std::vector<double> melt_temperature;  // K
-  std::vector<double> pressure;          // Pa, compression positive (EOS)
+  std::vector<double> eqps_rate;      // 1/s
+  std::vector<double> return_slope;   // Pa
+  std::vector<double> temperature;    // K
+  std::vector<double> energy;         // internal energy per reference volume, J/m^3
+  std::vector<double> J;              // V/V0
+  std::vector<double> flow_stress;    // Pa
+  std::vector<double> shear_modulus;  // Pa
 
   // Bookkeeping.
   std::vector<double> sound_speed;     // longitudinal wave speed after the last update, m/s

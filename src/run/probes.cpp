@@ -8,6 +8,7 @@
 #include <string>
 
 #include "materials/symmetric_tensor.hpp"
+#include "mpm/material_state.hpp"
 
 namespace coldspray::run {
 
@@ -41,15 +42,12 @@ int probe_field_index(const std::string& name) {
 }
 
 double probe_value(const mpm::State& s, std::size_t p, int field) {
-  using namespace mpm;
-  const Points& P = s.points;
+  const mpm::Points& P = s.points;
   switch (field) {
     case 0:
-      return P.pressure[p];
+      return materials::mean_pressure(mpm::stress_at(P, p));
     case 1:
-      return materials::von_mises_stress(
-          materials::SymmetricTensor{{P.stress[kXX][p], P.stress[kYY][p], P.stress[kZZ][p],
-                                      P.stress[kXY][p], P.stress[kYZ][p], P.stress[kXZ][p]}});
+      return materials::von_mises_stress(mpm::stress_at(P, p));
     case 2:
       return s.bodies[P.body[p]].material.density / P.J[p];
     case 3:

@@ -2,6 +2,7 @@
 
 #include "io/vtu.hpp"
 #include "materials/symmetric_tensor.hpp"
+#include "mpm/material_state.hpp"
 
 namespace coldspray::run {
 
@@ -9,13 +10,12 @@ void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   const mpm::Points& P = s.points;
   const std::size_t n = P.size();
   std::vector<std::int32_t> body(n);
-  std::vector<double> von_mises(n), density(n);
+  std::vector<double> pressure(n), von_mises(n), density(n);
   for (std::size_t p = 0; p < n; ++p) {
-    using namespace mpm;
     body[p] = P.body[p];
-    von_mises[p] = materials::von_mises_stress(
-        materials::SymmetricTensor{{P.stress[kXX][p], P.stress[kYY][p], P.stress[kZZ][p],
-                                    P.stress[kXY][p], P.stress[kYZ][p], P.stress[kXZ][p]}});
+    const materials::SymmetricTensor sigma = mpm::stress_at(P, p);
+    pressure[p] = materials::mean_pressure(sigma);
+    von_mises[p] = materials::von_mises_stress(sigma);
     density[p] = s.bodies[P.body[p]].material.density / P.J[p];
   }
   io::VtuPointCloud cloud(P.position);
@@ -23,7 +23,7 @@ void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   cloud.add_vector("velocity", P.velocity);
   cloud.add_scalar("eqps", P.eqps);
   cloud.add_scalar("temperature", P.temperature);
-  cloud.add_scalar("pressure", P.pressure);
+  cloud.add_scalar("pressure", pressure);
   cloud.add_scalar("von_mises", von_mises);
   cloud.add_scalar("density", density);
   cloud.add_byte("surface", P.surface);

@@ -140,6 +140,29 @@ TEST(MaterialsStressUpdate, ReturnLandsOnYieldSurfacePtw) {
   EXPECT_GT(plastic_steps, 50);
 }
 
+// The solver keeps no pressure per point: it outputs the stress's mean (mean_pressure). That is
+// the update's EOS pressure, as the returned deviator is traceless, through compression, shear
+// and flow.
+TEST(MaterialsStressUpdate, StressMeanIsTheEosPressure) {
+  const Material m = testing::al_ptw();
+  PointState st = initial_state(m, 298.0);
+  for (int n = 0; n < 40; ++n) {
+    Matrix3d d = Matrix3d::Zero();
+    d(0, 1) = d(1, 0) = 1.5e-3;
+    d(2, 2) = -2e-3;
+    StepKinematics k;
+    k.strain_increment = SymmetricTensor::of(d);
+    k.dt = 1e-9;
+    k.J_new = st.J * std::exp(d.trace());
+    update_stress(m, k, {}, st);
+    ASSERT_GT(st.pressure, 0.0);
+    EXPECT_NEAR(mean_pressure(st.stress), st.pressure,
+                1e-14 * (st.pressure + st.stress.von_mises()))
+        << n;
+  }
+  EXPECT_GT(st.eqps, 0.0);
+}
+
 // The same for Johnson-Cook copper (rate and temperature dependent, rate* floored at 1).
 TEST(MaterialsStressUpdate, ReturnLandsOnYieldSurfaceJohnsonCook) {
   const Material m = testing::cu_jc();
