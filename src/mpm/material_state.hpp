@@ -15,6 +15,7 @@ static_assert(materials::SymmetricTensor::index(0, 0) == kXX &&
               materials::SymmetricTensor::index(1, 2) == kYZ &&
               materials::SymmetricTensor::index(0, 2) == kXZ);
 
+// Point p's Cauchy stress, Pa.
 inline materials::SymmetricTensor stress_at(const Points& P, std::size_t p) {
   materials::SymmetricTensor sigma;
   for (int c = 0; c < 6; ++c) sigma.c[c] = P.stress[c][p];
