@@ -81,10 +81,8 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
     bond_sum += P.bond[p];
     m.contact_area += point_area(s, p);
     if (P.bond[p] > 0.0) touched += P.mass[p];
-    if (P.bond[p] >= 1.0) {
-      bonded += P.mass[p];
-      m.bonded_area += point_area(s, p);
-    }
+    if (P.bond[p] >= 1.0) bonded += P.mass[p];
+    if (P.bonded_to[p] != 0) m.bonded_area += point_area(s, p);
   }
   m.v_rest = rest_mass > 0.0 ? rest_momentum / rest_mass : kNaN;
   m.contact_area *= whole_body_factor(s, r);

@@ -26,7 +26,7 @@ struct ImpactMeasures {
   // Diameter across the axis of the body's points that are not jetted, over that at t = 0.
   double flattening_ratio = 0.0;
   double contact_area = 0.0;  // surface area of the points that touched another body, m^2
-  double bonded_area = 0.0;   // of those with D_bond >= 1, m^2
+  double bonded_area = 0.0;   // of those that keep a bond (mpm::Points::bonded_to), m^2
   bool moving = false;        // started with a z velocity: cor and the verdict apply
   bool bonded = false;        // pbcp >= metrics.bonded_pbcp and |v_rest| <= bonded_rest_speed
 };

@@ -48,7 +48,7 @@ bool BondShadows::bonds_now(std::size_t k, const ContactNodes& c) const {
     const auto slot = static_cast<std::int32_t>(s);
     for (int e1 = 0; e1 < c.body_count(slot); ++e1)
       for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2)
-        if (bond_holds(nodal_bond(c, bond_sum_[k], slot, e1, e2))) return true;
+        if (bond_forms(nodal_bond(c, bond_sum_[k], slot, e1, e2))) return true;
   }
   return false;
 }

@@ -1,6 +1,6 @@
 // Bond laws followed beside a run without acting on it. Runs that differ only in their bonding
 // parameters move identically until one of them bonds a node, because D_bond acts on the
-// mechanics only through bond_holds at the contact nodes (mpm/contact.hpp, thesis eq 4.7). A run
+// mechanics only through bond_forms at the contact nodes (mpm/contact.hpp, thesis eq 4.7). A run
 // carrying shadows keeps its own D_bond at zero, so it never bonds, and tracks for every shadow
 // law the D_bond its surface points would have (eqs 4.5 / 4.16a) and that law's nodal sums of
 // eq 4.6, accumulated in the order the run's own would be. The step at which a law's nodal D_bond

@@ -59,6 +59,8 @@ void ContactNodes::grow(std::size_t slots) {
   master_surface.resize(slots * kMaxPairsPerNode);
   other_surface.resize(slots * kMaxPairsPerNode);
   pair_touching.resize(slots * kMaxPairsPerNode);
+  pair_bonded_sides.resize(slots * kMaxPairsPerNode);
+  pair_bond_forms.resize(slots * kMaxPairsPerNode);
   bond_sum.resize(slots * kMaxBodiesPerNode);
   surface_count.resize(slots * kMaxBodiesPerNode);
 }
@@ -157,6 +159,8 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
         c.master_surface[k] = -std::numeric_limits<double>::infinity();
         c.other_surface[k] = std::numeric_limits<double>::infinity();
         c.pair_touching[k] = 0;
+        c.pair_bonded_sides[k] = 0;
+        c.pair_bond_forms[k] = 0;
       }
   }
 }
@@ -193,7 +197,9 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
                 ? c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) <= 0.0
                 : approaching;
         c.pair_touching[k] = touching;
-        const bool bonded = rule.bonding && bond_holds(nodal_bond(c, slot, e1, e2));
+        const bool forms = rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2));
+        c.pair_bond_forms[k] = forms;
+        const bool bonded = forms || (rule.bonding && bond_holds(c.pair_bonded_sides[k]));
         if (!bonded && !(approaching && touching)) continue;
         // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
         const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);

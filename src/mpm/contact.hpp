@@ -65,6 +65,14 @@ class ContactNodes {
   // Whether the pair is in contact at the node this step (the surfaces meet, or without the gap
   // check the bodies approach): its bodies' surface points there are in the bonding set S.
   std::vector<std::uint8_t> pair_touching;
+  // Bonds kept on the points (Points::bonded_to): bit kLowerSide (kHigherSide) is set when a
+  // point of the pair's lower (higher) entry bonded to the other entry's body covers the node.
+  // The pair is bonded here when both are (bond_holds).
+  std::vector<std::uint8_t> pair_bonded_sides;
+  // Whether the pair's nodal D_bond of eq 4.7 reached 1 at the node this step (bond_forms): the
+  // surface points of both bodies covering the node are bonded from then on.
+  std::vector<std::uint8_t> pair_bond_forms;
+  static constexpr std::uint8_t kLowerSide = 1, kHigherSide = 2;
 
   // Per entry, for the nodal bonding parameter (eq 4.6): sum over the body's surface points
   // covering the node of D_bond N_I(x_p), and their number.
@@ -115,8 +123,9 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // For every pair with a normal, in a fixed order: the approach test (eq 3.29), with the gap check
 // the surfaces meeting by the end of the step, and then the sticking correction (eq 3.31)
 // reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Where
-// the pair is bonded (nodal D_bond of eq 4.7 >= 1) the correction is applied in full, normal and
-// tangential, approaching or not: the bond force. Each correction changes the two bodies'
+// the pair is bonded (a bond forms there, nodal D_bond of eq 4.7 >= 1, or one kept on the points
+// holds) the correction is applied in full, normal and tangential, approaching or not: the bond
+// force. Each correction changes the two bodies'
 // momenta by equal and opposite amounts, and their forces by the same over dt.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
                      ContactResult& result);
@@ -142,7 +151,13 @@ inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1,
   return nodal_bond(contact, contact.bond_sum, slot, e1, e2);
 }
 
-// Whether a bonded node stays bonded. Always, for now: the place for a debonding law.
-inline bool bond_holds(double nodal_bond_value) { return nodal_bond_value >= 1.0; }
+// Eq 4.7's criterion: a bond forms at a node where the pair's nodal D_bond reaches 1.
+inline bool bond_forms(double nodal_bond_value) { return nodal_bond_value >= 1.0; }
+
+// Whether the bond kept on the points holds at a node: bonded points of both bodies reach it.
+// Without a debonding law (a later issue's place, here) a bond, once formed, always holds.
+inline bool bond_holds(std::uint8_t bonded_sides) {
+  return bonded_sides == (ContactNodes::kLowerSide | ContactNodes::kHigherSide);
+}
 
 }  // namespace coldspray::mpm

@@ -129,11 +129,21 @@ void map_bodies_to_contact_nodes(State& s) {
   });
 }
 
+// A point of entry e, bonded to body `partner`, covers the node at `slot`: its side of the pair
+// with the partner's entry is bonded there (ContactNodes::pair_bonded_sides).
+inline void mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int partner) {
+  const int o = cn.find(slot, partner);
+  if (o < 0 || o == e) return;
+  cn.pair_bonded_sides[ContactNodes::pair(slot, std::min(e, o), std::max(e, o))] |=
+      e < o ? ContactNodes::kLowerSide : ContactNodes::kHigherSide;
+}
+
 // What the contact step needs from the points near contact nodes. For the gap check: along each
 // pair's normal, the furthest reach of the master body's points (x_p . n plus the point's
 // half-width along n) and the nearest reach of the other's, over the points covering the node.
 // For bonding: each body's sum of D_bond N_I over its surface points there, and their number
-// (eq 4.6), and the same sums for the bond laws the run shadows. Minima and maxima are exact in any
+// (eq 4.6), the same sums for the bond laws the run shadows, and which sides of each pair have
+// bonded points there. Minima and maxima are exact in any
 // order, the sums run in block order, and the block colouring keeps threads off each other's nodes.
 template <class Shape, bool Axisymmetric>
 void gather_contact_points(State& s) {
@@ -157,6 +167,7 @@ void gather_contact_points(State& s) {
         add_bond_share(cn.bond_sum[f], P.bond[p], w);
         ++cn.surface_count[f];
         if (shadowing) shadows.add_to_sums(p, f, w);
+        if (P.bonded_to[p] != 0) mark_bonded_side(cn, slot, e, P.bonded_to[p] - 1);
       }
       if (!gap) return;
       for (int o = 0; o < cn.body_count(slot); ++o) {
@@ -180,7 +191,10 @@ void gather_contact_points(State& s) {
 // The bonding set S (thesis §4.1.1): a surface point is in contact this step where a node it
 // covers has its body touching another (ContactNodes::pair_touching); its contact normal, the
 // weighted mean of those pairs' normals turned outward from its own body, orients the shear
-// part of its plastic strain (bonding/bond_law.hpp). Writes only its own point.
+// part of its plastic strain (bonding/bond_law.hpp). A surface point covering a node where a bond
+// formed this step (ContactNodes::pair_bond_forms: it entered that node's eq 4.6) keeps the bond
+// to the other body from then on (Points::bonded_to), so that the bond no longer depends on which
+// points the moving material brings to the node. Writes only its own point.
 template <class Shape, bool Axisymmetric>
 void mark_touching_points(State& s) {
   if (!s.contact_rule.bonding) return;
@@ -203,6 +217,8 @@ void mark_touching_points(State& s) {
       for (int o = 0; o < cn.body_count(slot); ++o) {
         if (o == e) continue;
         const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
+        if (cn.pair_bond_forms[k] && P.bonded_to[p] == 0)
+          P.bonded_to[p] = static_cast<std::uint16_t>(cn.body(slot, o) + 1);
         if (!cn.pair_touching[k]) continue;
         P.touching[p] = 1;
         const double outward = cn.pair_master[k] == e ? w : -w;

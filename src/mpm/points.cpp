@@ -14,6 +14,7 @@ void Points::resize(std::size_t n) {
   surface.resize(n, 0);
   touched.resize(n, 0);
   touching.resize(n, 0);
+  bonded_to.resize(n, 0);
 }
 
 }  // namespace coldspray::mpm

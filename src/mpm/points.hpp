@@ -48,8 +48,11 @@ struct Points {
   std::vector<double> initial_z;       // z at t = 0, m (crater depth)
 
   // Bonding (thesis Chapter 4): D_bond, and whether the surface point has touched another
-  // body (ever, and in this step, with its body's outward contact normal).
+  // body (ever, and in this step, with its body's outward contact normal). `bonded_to` keeps the
+  // bond: 1 + the body the point bonded to at a node where a bond formed (eq 4.7), 0 while it
+  // has not; the bond force acts wherever bonded points of both bodies meet (mpm/contact.hpp).
   std::vector<double> bond;
+  std::vector<std::uint16_t> bonded_to;
   std::vector<std::uint8_t> touched;
   std::vector<std::uint8_t> touching;
   std::array<std::vector<double>, 3> contact_normal;

@@ -1,5 +1,5 @@
 // Runs that differ only in their bonding parameters, run together, as a calibration's grid over
-// (G_c, Gdot_c) is. D_bond acts on the mechanics only where a contact node bonds (bond_holds,
+// (G_c, Gdot_c) is. D_bond acts on the mechanics only where a contact node bonds (bond_forms,
 // thesis eq 4.7), so until then every member moves exactly as an unbonded run does. The family
 // steps that one shared run (the trunk), following every member's D_bond beside it
 // (mpm/bond_shadows.hpp); at the step where a member's nodal D_bond first reaches 1 the trunk is

@@ -9,10 +9,11 @@ namespace coldspray::run {
 void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   const mpm::Points& P = s.points;
   const std::size_t n = P.size();
-  std::vector<std::int32_t> body(n);
+  std::vector<std::int32_t> body(n), bonded_to(n);
   std::vector<double> pressure(n), von_mises(n), density(n);
   for (std::size_t p = 0; p < n; ++p) {
     body[p] = P.body[p];
+    bonded_to[p] = static_cast<std::int32_t>(P.bonded_to[p]) - 1;  // -1: not bonded
     const materials::SymmetricTensor sigma = mpm::stress_at(P, p);
     pressure[p] = materials::mean_pressure(sigma);
     von_mises[p] = materials::von_mises_stress(sigma);
@@ -28,6 +29,7 @@ void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
   cloud.add_scalar("density", density);
   cloud.add_byte("surface", P.surface);
   cloud.add_scalar("bond", P.bond);
+  cloud.add_int("bonded_to", bonded_to);
   cloud.write(path);
 }
 

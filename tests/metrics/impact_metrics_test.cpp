@@ -31,6 +31,8 @@ mpm::State six_points() {
   const double vx[6] = {0.0, 0.0, 0.0, 0.0, 500.0, 0.0};  // point 4 jets outward
   const double bond[6] = {1.5, 0.4, 0.0, 1.0, 2.0, 0.0};
   const std::uint8_t touched[6] = {1, 1, 1, 1, 1, 0};
+  // Points 0 and 4 keep a bond to body 1; point 3 has D_bond = 1 but met no node that bonded.
+  const std::uint16_t bonded_to[6] = {2, 0, 0, 0, 2, 0};
   for (std::size_t p = 0; p < 6; ++p) {
     P.mass[p] = 1e-15;
     P.volume0[p] = 1e-18;
@@ -40,6 +42,7 @@ mpm::State six_points() {
     P.velocity[2][p] = vz[p];
     P.bond[p] = bond[p];
     P.touched[p] = touched[p];
+    P.bonded_to[p] = bonded_to[p];
     P.surface[p] = 1;
   }
   return s;
@@ -58,9 +61,9 @@ TEST(ImpactMetrics, CountsByHand) {
   EXPECT_NEAR(m.cor, 14.0 / 6.0 / 800.0, 1e-15);
   // Point 4 is fast and moves away from the axis through the centroid (x = 1.5e-6 / 6).
   EXPECT_NEAR(m.jetted_fraction, 1.0 / 6.0, 1e-15);
-  // Five touched points of area (1e-18)^(2/3) = 1e-12 m^2; three bonded.
+  // Five touched points of area (1e-18)^(2/3) = 1e-12 m^2; two keep a bond.
   EXPECT_NEAR(m.contact_area, 5e-12, 1e-24);
-  EXPECT_NEAR(m.bonded_area, 3e-12, 1e-24);
+  EXPECT_NEAR(m.bonded_area, 2e-12, 1e-24);
   // Not bonded: |v_rest| 0.8 > 0.6 m/s, though pbcp >= 5 %.
   EXPECT_TRUE(m.moving);
   EXPECT_FALSE(m.bonded);
@@ -92,7 +95,7 @@ TEST(ImpactMetrics, AQuarterModelMeasuresTheWholeBody) {
   s.bodies[0].mirror_plane = {0.0, 0.0};
   const ImpactMeasures m = impact_measures(s, 0);
   EXPECT_NEAR(m.contact_area, 4 * 5e-12, 1e-24);
-  EXPECT_NEAR(m.bonded_area, 4 * 3e-12, 1e-24);
+  EXPECT_NEAR(m.bonded_area, 4 * 2e-12, 1e-24);
   // Non-jetted points reach |x| = 1.5 um from the axis x = 0: (2 * 1.5 + 1) / 4 um. About the
   // centroid (x = 0.25 um) it would be (2 * 1.75 + 1) / 4.
   EXPECT_NEAR(m.flattening_ratio, 1.0, 1e-12);
@@ -114,12 +117,21 @@ TEST(NodalBond, AveragesEachBodyThenThePair) {
   c.bond_sum[mpm::ContactNodes::flat(slot, b)] = 0.9;
   c.surface_count[mpm::ContactNodes::flat(slot, b)] = 3;
   EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.5 * (0.6 + 0.3), 1e-15);
-  EXPECT_FALSE(mpm::bond_holds(mpm::nodal_bond(c, slot, a, b)));
+  EXPECT_FALSE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b)));
   c.bond_sum[mpm::ContactNodes::flat(slot, a)] = 3.4;  // 1.7 and 0.3: the mean is 1
-  EXPECT_TRUE(mpm::bond_holds(mpm::nodal_bond(c, slot, a, b)));
+  EXPECT_TRUE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b)));
   // A body with no surface point at the node contributes 0.
   c.surface_count[mpm::ContactNodes::flat(slot, b)] = 0;
   EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.85, 1e-15);
+}
+
+// A kept bond holds at a node only where bonded points of both bodies reach it.
+TEST(KeptBond, HoldsWhereBondedPointsOfBothSidesMeet) {
+  using mpm::ContactNodes;
+  EXPECT_FALSE(mpm::bond_holds(0));
+  EXPECT_FALSE(mpm::bond_holds(ContactNodes::kLowerSide));
+  EXPECT_FALSE(mpm::bond_holds(ContactNodes::kHigherSide));
+  EXPECT_TRUE(mpm::bond_holds(ContactNodes::kLowerSide | ContactNodes::kHigherSide));
 }
 
 }  // namespace
