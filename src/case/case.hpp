@@ -104,6 +104,10 @@ struct Contact {
 
 enum class BondingModel { None, Strain, Energy };
 
+// How eq 4.6 averages D_bond over a body's surface points at a node: divided by their count, as
+// the thesis, or by the sum of their shape-function weights (docs/bonding.md).
+enum class NodalAverage { Count, Weight };
+
 // The direct bonding model (thesis Chapter 4). The thesis' code measured rates per microsecond;
 // here they are per second (its Gdot_c = 2.271 J/m^2/us is 2.271e6 J/m^2/s). The energy model's
 // defaults are the project's calibration for al-ptw on al-ptw with floor 0.1, r-z, 0.7/0.175 um
@@ -118,6 +122,7 @@ struct Bonding {
   // eps_bond >= floor eps_c and G_bond >= floor G_c: the logarithm of eqs 4.4 and 4.16b
   // exceeds 1 at jetting rates and would make them negative (docs/bonding.md).
   double floor = 0.1;
+  NodalAverage nodal_average = NodalAverage::Count;
 
   friend bool operator==(const Bonding&, const Bonding&) = default;
 };

@@ -45,6 +45,9 @@ inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingMod
                                                              {"strain", BondingModel::Strain},
                                                              {"energy", BondingModel::Energy}}}};
 
+inline constexpr Names<NodalAverage, 2> kNodalAverageNames{
+    {{{"count", NodalAverage::Count}, {"weight", NodalAverage::Weight}}}};
+
 inline constexpr std::array<std::string_view, 14> kProbeFields{
     "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
     "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
@@ -139,6 +142,7 @@ void fields(IO& io, Bonding& b) {
   io.quantity("critical_energy_rate", b.critical_energy_rate, units::kEnergyPerAreaPerTime,
               kOptional, kPositive);
   io.quantity("floor", b.floor, units::kDimensionless, kOptional, kFraction);
+  io.scalar("nodal_average", b.nodal_average, kNodalAverageNames, kOptional);
 }
 
 template <class IO>

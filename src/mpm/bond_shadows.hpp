@@ -42,7 +42,7 @@ class BondShadows {
   }
   // Whether shadow k's nodal D_bond (eq 4.7) holds at some pair of bodies at a contact node this
   // step: from then on its run differs from this one.
-  bool bonds_now(std::size_t k, const ContactNodes& c) const;
+  bool bonds_now(std::size_t k, const ContactNodes& c, case_file::NodalAverage average) const;
 
   // Shadow k's D_bond at P's surface points, and its sums into c.bond_sum: what the state would
   // hold, at this point of the step, had it run with law k.

@@ -20,7 +20,7 @@ std::int32_t ContactNodes::add(std::size_t node) {
   body_count_[s] = 0;
   for (int e = 0; e < kMaxBodiesPerNode; ++e) {
     const std::size_t f = flat(s, e);
-    mass[f] = bond_sum[f] = 0.0;
+    mass[f] = bond_sum[f] = surface_weight[f] = 0.0;
     surface_count[f] = 0;
     for (int d = 0; d < 3; ++d)
       momentum[d][f] = force[d][f] = mass_gradient[d][f] = correction[d][f] = 0.0;
@@ -63,6 +63,7 @@ void ContactNodes::grow(std::size_t slots) {
   pair_bond_forms.resize(slots * kMaxPairsPerNode);
   bond_sum.resize(slots * kMaxBodiesPerNode);
   surface_count.resize(slots * kMaxBodiesPerNode);
+  surface_weight.resize(slots * kMaxBodiesPerNode);
 }
 
 namespace {
@@ -166,11 +167,13 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
 }
 
 double nodal_bond(const ContactNodes& c, const std::vector<double>& bond_sum, std::int32_t slot,
-                  int e1, int e2) {
+                  int e1, int e2, case_file::NodalAverage average) {
   double sum = 0.0;
   for (const int e : {e1, e2}) {
     const std::size_t f = ContactNodes::flat(slot, e);
-    if (c.surface_count[f] > 0) sum += bond_sum[f] / c.surface_count[f];
+    if (c.surface_count[f] == 0) continue;
+    sum += bond_sum[f] /
+           (average == case_file::NodalAverage::Count ? c.surface_count[f] : c.surface_weight[f]);
   }
   return 0.5 * sum;
 }
@@ -197,7 +200,8 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
                 ? c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) <= 0.0
                 : approaching;
         c.pair_touching[k] = touching;
-        const bool forms = rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2));
+        const bool forms =
+            rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2, rule.nodal_average));
         c.pair_bond_forms[k] = forms;
         const bool bonded = forms || (rule.bonding && bond_holds(c.pair_bonded_sides[k]));
         if (!bonded && !(approaching && touching)) continue;

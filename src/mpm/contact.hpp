@@ -78,6 +78,7 @@ class ContactNodes {
   // covering the node of D_bond N_I(x_p), and their number.
   std::vector<double> bond_sum;
   std::vector<std::uint32_t> surface_count;
+  std::vector<double> surface_weight;  // and their sum of N_I
 
  private:
   void grow(std::size_t slots);
@@ -98,6 +99,7 @@ struct ContactRule {
   bool gap_check = true;
   // The direct bonding model is on: bonded nodes stick (thesis §4.1.1).
   bool bonding = false;
+  case_file::NodalAverage nodal_average = case_file::NodalAverage::Count;  // eq 4.6's divisor
 };
 
 // What the contact step did, for the history; and its per-step scratch.
@@ -143,12 +145,14 @@ inline void add_bond_share(double& sum, double bond, double weight) {
 }
 
 // Eqs 4.6-4.7: the pair's global nodal bonding parameter, the mean of the two bodies' nodal
-// values, each sum_p D_bond N_I / n_sp over its surface points covering the node.
-// `bond_sum` is contact.bond_sum or sums laid out like it (mpm/bond_shadows.hpp).
+// values, each sum_p D_bond N_I over its surface points covering the node divided by their
+// number n_sp (the thesis) or by their sum of N_I (`average`). `bond_sum` is contact.bond_sum or
+// sums laid out like it (mpm/bond_shadows.hpp).
 double nodal_bond(const ContactNodes& contact, const std::vector<double>& bond_sum,
-                  std::int32_t slot, int e1, int e2);
-inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2) {
-  return nodal_bond(contact, contact.bond_sum, slot, e1, e2);
+                  std::int32_t slot, int e1, int e2, case_file::NodalAverage average);
+inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2,
+                         case_file::NodalAverage average = case_file::NodalAverage::Count) {
+  return nodal_bond(contact, contact.bond_sum, slot, e1, e2, average);
 }
 
 // Eq 4.7's criterion: a bond forms at a node where the pair's nodal D_bond reaches 1.

@@ -166,6 +166,7 @@ void gather_contact_points(State& s) {
         const std::size_t f = ContactNodes::flat(slot, e);
         add_bond_share(cn.bond_sum[f], P.bond[p], w);
         ++cn.surface_count[f];
+        cn.surface_weight[f] += w;
         if (shadowing) shadows.add_to_sums(p, f, w);
         if (P.bonded_to[p] != 0) mark_bonded_side(cn, slot, e, P.bonded_to[p] - 1);
       }

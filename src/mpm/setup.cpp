@@ -344,6 +344,7 @@ State build_state(const case_file::Case& c) {
   s.contact_rule.gap_check = c.contact.gap_check;
   s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid.cell_size);
   s.contact_rule.bonding = s.bond_law.enabled();
+  s.contact_rule.nodal_average = c.bonding.nodal_average;
   s.impact_metrics = c.metrics;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);

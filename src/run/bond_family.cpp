@@ -62,7 +62,8 @@ class Trunk {
       const double shared = seconds_since(t0);
       double handed_on = 0.0;
       for (std::size_t k = shadows_.size(); k-- > 0;)
-        if (shadows_.bonds_now(k, state_.contact)) handed_on += branch_off(k, shared);
+        if (shadows_.bonds_now(k, state_.contact, state_.contact_rule.nodal_average))
+          handed_on += branch_off(k, shared);
       if (!shadows_.active()) return;
       if (!step(mpm::step_from_contact)) return;
       record_step(rule_.finished(state_));

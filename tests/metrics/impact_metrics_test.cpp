@@ -125,6 +125,24 @@ TEST(NodalBond, AveragesEachBodyThenThePair) {
   EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.85, 1e-15);
 }
 
+// Weight-normalised: sum D N / sum N, the partition-of-unity mean. Two points of body a with
+// N = 0.6 and 0.2 and D = 1.5 and 0.5: (0.9 + 0.1) / 0.8 = 1.25 (by count: 1.0 / 2 = 0.5); one of
+// body b with N = 0.25 and D = 0.4: 0.1 / 0.25 = 0.4 (by count 0.1). The pair: 0.825 against 0.3.
+TEST(NodalBond, WeightNormalisedAverageDividesBySumOfWeights) {
+  mpm::ContactNodes c;
+  const std::int32_t slot = c.add(3);
+  const int a = c.entry(slot, 0), b = c.entry(slot, 1);
+  const std::size_t fa = mpm::ContactNodes::flat(slot, a), fb = mpm::ContactNodes::flat(slot, b);
+  c.bond_sum[fa] = 1.5 * 0.6 + 0.5 * 0.2;
+  c.surface_count[fa] = 2;
+  c.surface_weight[fa] = 0.8;
+  c.bond_sum[fb] = 0.4 * 0.25;
+  c.surface_count[fb] = 1;
+  c.surface_weight[fb] = 0.25;
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Weight), 0.825, 1e-15);
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Count), 0.3, 1e-15);
+}
+
 // A kept bond holds at a node only where bonded points of both bodies reach it.
 TEST(KeptBond, HoldsWhereBondedPointsOfBothSidesMeet) {
   using mpm::ContactNodes;
