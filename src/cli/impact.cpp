@@ -110,6 +110,7 @@ void add_impact(CLI::App& app) {
   add_run_flags(*sub, opt->run);
   sub->callback([opt, sub] {
     const ImpactSpec spec = make_spec(*opt, *sub);
+    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     const GeneratedCase g = impact_case(spec);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->run.sets);
     const case_file::Case c = case_file::load_case_text(kSource, g.yaml, g.origins, overrides);

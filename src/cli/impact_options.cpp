@@ -58,6 +58,19 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
       ->capture_default_str();
 }
 
+std::string calibration_warning(const ImpactCaseOptions& o) {
+  constexpr std::string_view kCalibrated = "al-ptw";
+  const std::string& substrate = o.substrate_material.empty() ? o.material : o.substrate_material;
+  if (o.bonding != "energy" || (!o.gc.empty() && !o.gc_rate.empty()) ||
+      (o.material == kCalibrated && substrate == kCalibrated))
+    return "";
+  return fmt::format(
+      "warning: the energy bonding model's defaults (G_c, Gdot_c) were calibrated for {0} on {0}, "
+      "not for {1} on {2}: its verdicts for this pair are not calibrated; give --Gc and --Gc-rate "
+      "from a calibration of this pair (coldspray calibrate, docs/studies.md)",
+      kCalibrated, o.material, substrate);
+}
+
 std::pair<double, double> parse_grid(const std::string& text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] != '/') continue;

@@ -47,6 +47,11 @@ double parse_speed(const std::string& option, const std::string& text);
 ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
                        const std::string& command);
 
+// The energy model's defaults are the project's calibration for al-ptw on al-ptw
+// (docs/validation/critical-velocity.md): for any other pair, unless --Gc and --Gc-rate are
+// given, the warning to print (empty otherwise).
+std::string calibration_warning(const ImpactCaseOptions& o);
+
 std::string shell_quoted(const std::string& text);
 
 // `source` and the subcommand's options as given, without those in `skip`: the header of a

@@ -86,6 +86,7 @@ void add_vcrit(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt, sub] {
+    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     studies::VcritOptions o;
     o.diameters = parse_diameters(opt->diameters);
     o.vmin = parse_speed("--vmin", opt->vmin);

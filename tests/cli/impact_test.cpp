@@ -219,5 +219,24 @@ TEST(ImpactExamples, EveryExampleIsWhatItsCommandGenerates) {
   }
 }
 
+// The energy defaults are al-ptw on al-ptw's calibration: another pair is warned about, the
+// calibrated pair and a pair given its own G_c and Gdot_c are not.
+TEST(ImpactCalibration, WarnsWhenThePairIsNotTheCalibratedOne) {
+  const std::string dir = make_temp_dir("impact-warning");
+  const std::string base = "impact --diameter 30um --velocity 500m/s --write-case case.yaml ";
+  const auto copper = run_coldspray(base + "--material cu-jc", dir);
+  EXPECT_EQ(copper.status, 0) << copper.output;
+  EXPECT_NE(copper.output.find("warning: the energy bonding model's defaults"), std::string::npos)
+      << copper.output;
+  EXPECT_NE(copper.output.find("not for cu-jc on cu-jc"), std::string::npos) << copper.output;
+  const auto al_on_cu = run_coldspray(base + "--material al-ptw --substrate-material cu-jc", dir);
+  EXPECT_NE(al_on_cu.output.find("not for al-ptw on cu-jc"), std::string::npos) << al_on_cu.output;
+  const auto aluminium = run_coldspray(base + "--material al-ptw", dir);
+  EXPECT_EQ(aluminium.output.find("warning"), std::string::npos) << aluminium.output;
+  const auto own =
+      run_coldspray(base + "--material cu-jc --Gc 500J/m^2 --Gc-rate 1e5J/m^2/us", dir);
+  EXPECT_EQ(own.output.find("warning"), std::string::npos) << own.output;
+}
+
 }  // namespace
 }  // namespace coldspray::testing
