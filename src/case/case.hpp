@@ -86,6 +86,9 @@ struct Solver {
   double cfl = 0.3;                // dt = cfl h / max(c + |v|)
   std::optional<double> dt_scale;  // alternative: fraction of the critical step (thesis §5.1.4)
   ArtificialViscosity artificial_viscosity;
+  // Fourier heat conduction between points, with the materials' thermal_conductivity
+  // (docs/mpm.md); off, every point heats adiabatically (thesis §3.5.3).
+  bool heat_conduction = false;
 
   friend bool operator==(const Solver&, const Solver&) = default;
 };

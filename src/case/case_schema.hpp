@@ -124,6 +124,7 @@ void fields(IO& io, Solver& s) {
   io.quantity("cfl", s.cfl, units::kDimensionless, kOptional, kFraction);
   io.quantity("dt_scale", s.dt_scale, units::kDimensionless, kOptional, kFraction);
   io.section("artificial_viscosity", s.artificial_viscosity, kOptional);
+  io.scalar("heat_conduction", s.heat_conduction, Flag{}, kOptional);
 }
 
 template <class IO>

@@ -14,9 +14,9 @@
 namespace coldspray::case_file {
 
 // The top-level groups of a material; `sources:` gives the provenance of each.
-inline constexpr std::array<std::string_view, 8> kMaterialGroups{
-    "density", "elastic", "strength",      "shear_modulus_model",
-    "melt",    "eos",     "specific_heat", "taylor_quinney"};
+inline constexpr std::array<std::string_view, 9> kMaterialGroups{
+    "density", "elastic",       "strength",       "shear_modulus_model", "melt",
+    "eos",     "specific_heat", "taylor_quinney", "thermal_conductivity"};
 
 inline constexpr std::array<std::string_view, 4> kStrengthModels{"elastic", "von-mises",
                                                                  "johnson-cook", "ptw"};
@@ -137,6 +137,8 @@ void fields(IO& io, materials::Material& m) {
   io.quantity("specific_heat", m.thermal.specific_heat, units::kSpecificHeat, kRequired, kPositive);
   io.quantity("taylor_quinney", m.thermal.taylor_quinney, units::kDimensionless, kOptional,
               kUnitInterval);
+  io.quantity("thermal_conductivity", m.thermal.conductivity, units::kThermalConductivity,
+              kOptional, kNonNegative);
   io.table("sources", m.sources, Keywords{kMaterialGroups}, Text{});
 }
 

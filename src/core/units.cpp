@@ -255,6 +255,7 @@ std::string si_unit(const Dimension& d) {
       Named{kEnergyPerArea, "J/m^2"},
       Named{kEnergyPerAreaPerTime, "J/m^2/s"},
       Named{kSpecificHeat, "J/kg/K"},
+      Named{kThermalConductivity, "W/m/K"},
       Named{kEnergy / kMass, "J/kg"},
   };
   for (const Named& n : kNamed) {
@@ -299,6 +300,7 @@ std::string dimension_name(const Dimension& d) {
       Named{kEnergyPerArea, "energy per area"},
       Named{kEnergyPerAreaPerTime, "energy per area and time"},
       Named{kSpecificHeat, "specific heat"},
+      Named{kThermalConductivity, "thermal conductivity"},
       Named{kEnergy / kMass, "specific energy"},
   };
   for (const Named& n : kNamed) {

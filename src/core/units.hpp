@@ -38,6 +38,7 @@ inline constexpr Dimension kDensity = kMass / kLength.pow(3);
 inline constexpr Dimension kEnergyPerArea = kEnergy / kLength.pow(2);
 inline constexpr Dimension kEnergyPerAreaPerTime = kEnergyPerArea / kTime;
 inline constexpr Dimension kSpecificHeat = kEnergy / kMass / kTemperature;
+inline constexpr Dimension kThermalConductivity = kEnergy / kTime / kLength / kTemperature;
 
 struct Quantity {
   double value = 0.0;  // in SI

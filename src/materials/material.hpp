@@ -94,6 +94,7 @@ using Model = std::variant<Linear, MieGruneisen>;
 struct Thermal {
   double specific_heat = 0.0;   // C_p, J/(kg K)
   double taylor_quinney = 0.9;  // chi, fraction of plastic work turned into heat
+  double conductivity = 0.0;    // k, W/(m K), for solver.heat_conduction (0: none)
 };
 
 struct Material {

@@ -44,6 +44,15 @@ struct NodeMotion {
   std::array<double, 3> velocity_change;  // m/s
 };
 
+// Heat conduction's nodal sums (mpm/heat_conduction.hpp): heat capacity sum N m C_p, J/K; the
+// temperature (first the heat content sum N m C_p T, J, then divided by the capacity), K; the heat
+// flowing into the node, W.
+struct NodeHeat {
+  double capacity = 0.0;
+  double temperature = 0.0;
+  double flow = 0.0;
+};
+
 // Nodal quantities summed over all bodies.
 struct GridFields {
   std::vector<NodeSums> sums;
@@ -54,6 +63,8 @@ struct GridFields {
   std::vector<std::int32_t> contact_slot;
   // Once per phase that reads them (mpm/phases.hpp: compute_nodal_velocities).
   std::vector<NodeMotion> motion;
+  // Only with solver.heat_conduction; empty otherwise.
+  std::vector<NodeHeat> heat;
 
   void resize(std::size_t n);
   void clear();  // zero the sums for a new step (no allocation); velocities follow from them

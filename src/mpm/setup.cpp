@@ -365,6 +365,14 @@ State build_state(const case_file::Case& c) {
     s.max_signal_speed = std::max(s.max_signal_speed, P.sound_speed[q] + speed);
   }
   s.mass_floor = 1e-10 * min_mass;
+  s.heat_conduction = c.solver.heat_conduction;
+  if (s.heat_conduction) {
+    s.grid.heat.resize(s.layout.node_count());
+    for (const BodyRange& b : s.bodies)
+      s.max_diffusivity =
+          std::max(s.max_diffusivity, b.material.thermal.conductivity /
+                                          (b.material.density * b.material.thermal.specific_heat));
+  }
   return s;
 }
 

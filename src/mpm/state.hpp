@@ -114,6 +114,10 @@ struct State {
   long step = 0;
   double max_signal_speed = 0.0;  // max over points of c + |v| after the last stress update
   double mass_floor = 0.0;        // nodes lighter than this carry no velocity, kg
+  // solver.heat_conduction, and the largest thermal diffusivity k / (rho C_p) of the bodies, m^2/s
+  // (the conduction's time-step limit, mpm/stepper.hpp).
+  bool heat_conduction = false;
+  double max_diffusivity = 0.0;
   Fault fault;
 };
 

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "mpm/boundaries.hpp"
+#include "mpm/heat_conduction.hpp"
 #include "mpm/phases.hpp"
 
 namespace coldspray::mpm {
@@ -104,7 +105,13 @@ void integrate_grid_momentum(State& s) {
 }  // namespace
 
 double stable_time_step(const State& s, double cfl) {
-  return cfl * s.layout.h / s.max_signal_speed;
+  const double mechanical = cfl * s.layout.h / s.max_signal_speed;
+  if (!s.heat_conduction || s.max_diffusivity <= 0.0) return mechanical;
+  // Explicit conduction (forward Euler in time) is stable for alpha dt / h^2 <= 1 / (2 n) on a
+  // lattice of n dimensions; half of that, since a point's stencil spans more than two cells.
+  const double dimensions = s.layout.axisymmetric ? 2.0 : 3.0;
+  const double h = s.layout.h;
+  return std::min(mechanical, 0.5 * h * h / (2.0 * dimensions * s.max_diffusivity));
 }
 
 namespace {
@@ -139,6 +146,7 @@ void musl_from_contact(State& s) {
   update_point_velocities_and_remap<Shape, Axisymmetric>(s);  // steps 7-8, eqs 3.32-3.33
   apply_node_constraints(s, /*force_too=*/false);             //   with the essential BCs
   compute_nodal_velocities(s, /*with_forces=*/false);         //   v = p/m of the re-map
+  conduct_heat<Shape, Axisymmetric>(s);                       // Fourier conduction (docs/mpm.md)
   // Steps 9-11, eqs 3.34-3.36 and Appendix A, in one parallel region for all bodies: each thread
   // takes a contiguous share of the bodies' batches of points, and the shares follow the
   // threads' times (mpm/work_shares.hpp).

@@ -61,7 +61,9 @@ void Recorder::after_step(const mpm::State& s, bool last) {
     history_.record(s.time, e, metrics::body_metrics(s));
     contact_history_.record(s);
     probes_.record(s);
-    if (e.total() > (1.0 + kEnergyGrowthLimit) * summary_.total_energy_initial)
+    // (A run that starts with no energy at all, bodies at rest, has no scale to grow against.)
+    if (summary_.total_energy_initial > 0.0 &&
+        e.total() > (1.0 + kEnergyGrowthLimit) * summary_.total_energy_initial)
       throw RunFault(
           fmt::format("total energy grew to {:.4g} J from {:.4g} J at t = {:.6g} ns "
                       "(an instability: try a smaller solver.cfl)",

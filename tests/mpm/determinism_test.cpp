@@ -36,15 +36,26 @@ void expect_identical(const Points& a, const Points& b) {
     for (std::size_t p = 0; p < a.size(); ++p) ASSERT_EQ(a.stress[c][p], b.stress[c][p]);
 }
 
-TEST(MpmDeterminism, AxisymmetricImpactIsBitIdenticalOnOneAndTwoThreads) {
-  const std::vector<case_file::Override> coarse = {{"grid.cell_size", "1.4 um"},
-                                                   {"bodies.particle.spacing", "0.35 um"},
-                                                   {"bodies.substrate.spacing", "0.35 um"}};
+// The r-z example, coarsened, for 60 steps on 1 and 2 threads, with `extra` overrides.
+void expect_axisymmetric_impact_identical(std::vector<case_file::Override> extra) {
+  std::vector<case_file::Override> coarse = {{"grid.cell_size", "1.4 um"},
+                                             {"bodies.particle.spacing", "0.35 um"},
+                                             {"bodies.substrate.spacing", "0.35 um"}};
+  coarse.insert(coarse.end(), extra.begin(), extra.end());
   const int threads = omp_get_max_threads();
   const Points one = run_steps("al-14um-810.yaml", coarse, 1, 60);
   const Points two = run_steps("al-14um-810.yaml", coarse, 2, 60);
   omp_set_num_threads(threads);
   expect_identical(one, two);
+  for (std::size_t p = 0; p < one.size(); ++p) ASSERT_EQ(one.temperature[p], two.temperature[p]);
+}
+
+TEST(MpmDeterminism, AxisymmetricImpactIsBitIdenticalOnOneAndTwoThreads) {
+  expect_axisymmetric_impact_identical({});
+}
+
+TEST(MpmDeterminism, HeatConductionIsBitIdenticalOnOneAndTwoThreads) {
+  expect_axisymmetric_impact_identical({{"solver.heat_conduction", "true"}});
 }
 
 TEST(MpmDeterminism, ThreeDimensionalTaylorBarIsBitIdenticalOnOneAndTwoThreads) {
