@@ -59,6 +59,20 @@ struct Points {
 
   std::size_t size() const { return mass.size(); }
   void resize(std::size_t n);
+
+  // Calls f(v) for every per-point array v (a std::vector of doubles or of integers).
+  template <class F>
+  void for_each_array(F&& f) {
+    for (auto* a : {&position, &velocity, &half_width, &contact_normal, &displacement})
+      for (auto& v : *a) f(v);
+    for (auto& v : stress) f(v);
+    for (auto* v : {&mass, &volume0, &eqps, &eqps_rate, &return_slope, &temperature, &energy, &J,
+                    &flow_stress, &shear_modulus, &sound_speed, &bulk_viscosity, &plastic_work,
+                    &viscous_work, &contact_work, &initial_z, &bond})
+      f(*v);
+    for (auto* v : {&surface, &touched, &touching}) f(*v);
+    f(body);
+  }
 };
 
 }  // namespace coldspray::mpm
