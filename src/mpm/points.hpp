@@ -46,6 +46,9 @@ struct Points {
   std::vector<std::uint16_t> body;     // index into the run's body list
   std::vector<std::uint8_t> surface;   // 1 on the body's initial surface (bonding set S)
   std::vector<double> initial_z;       // z at t = 0, m (crater depth)
+  // The point's index among its body's points at t = 0, which it keeps when points before it
+  // leave the grid (mpm/departures.hpp): ascending within each body.
+  std::vector<std::uint32_t> id;
 
   // Bonding (thesis Chapter 4): D_bond, and whether the surface point has touched another
   // body (ever, and in this step, with its body's outward contact normal).
@@ -72,6 +75,7 @@ struct Points {
       f(*v);
     for (auto* v : {&surface, &touched, &touching}) f(*v);
     f(body);
+    f(id);
   }
 };
 

@@ -9,7 +9,7 @@ namespace coldspray::run {
 namespace {
 
 std::string header(const mpm::State& s) {
-  std::string h = "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,total";
+  std::string h = "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,departed,total";
   for (const auto& b : s.bodies)
     for (const char* q :
          {"vx", "vy", "vz", "contact_fx", "contact_fy", "contact_fz", "cor", "v_rest", "abp",
@@ -25,9 +25,9 @@ HistoryWriter::HistoryWriter(const mpm::State& s, const std::filesystem::path& p
 
 void HistoryWriter::record(double time, const metrics::EnergyBudget& e,
                            const std::vector<metrics::BodyMetrics>& bodies) {
-  std::string row = fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
-                                time, e.kinetic, e.elastic(), e.plastic_work, e.viscous, e.absorbed,
-                                e.contact, e.total());
+  std::string row = fmt::format(
+      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", time, e.kinetic,
+      e.elastic(), e.plastic_work, e.viscous, e.absorbed, e.contact, e.departed, e.total());
   for (const auto& b : bodies) {
     row += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", b.velocity[0],
                        b.velocity[1], b.velocity[2], b.contact_force[0], b.contact_force[1],

@@ -25,6 +25,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                  {"viscous", s.energy.viscous},
                  {"absorbed", s.energy.absorbed},
                  {"contact", s.energy.contact},
+                 {"departed", s.energy.departed},
                  {"total", s.energy.total()},
                  {"total_initial", s.total_energy_initial},
                  {"relative_error", s.energy_relative_error()}};
