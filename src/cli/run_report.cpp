@@ -40,12 +40,17 @@ Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostr
       s.energy.absorbed, s.energy.contact,
       s.energy.departed != 0.0 ? fmt::format(", departed {:.4g} J", s.energy.departed) : "",
       s.energy_relative_error());
-  for (const auto& b : s.bodies)
+  for (const auto& b : s.bodies) {
     out << fmt::format(
         "  {}: velocity ({:.4g}, {:.4g}, {:.4g}) m/s, max eqps {:.3g}, mean eqps {:.3g}, "
-        "max T {:.0f} K\n",
+        "max T {:.0f} K",
         b.name, b.velocity[0], b.velocity[1], b.velocity[2], b.max_eqps, b.mean_eqps,
         b.max_temperature);
+    if (b.departed.points > 0)
+      out << fmt::format("; {} points, {:.3g} % of its mass, left the grid", b.departed.points,
+                         100.0 * b.departed.mass / (b.mass + b.departed.mass));
+    out << "\n";
+  }
   return {s, options.out_dir};
 }
 

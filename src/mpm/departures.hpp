@@ -31,9 +31,9 @@ inline constexpr double kDepartedBulkFraction = 0.5;
 
 // After a step in which s.departing points moved out of the domain: books each into its body's
 // ledger and removes it. A rare event: one pass over every per-point array, without reallocation
-// (the list of the departing points is allocated). Throws RunFault naming the body and the
-// fraction, with the state as the step left it, when a body's departed mass would exceed
-// kDepartedBulkFraction of its mass.
+// (the lists of the departing points, their bond-shadow columns and their bodies' masses are
+// allocated). Throws RunFault naming the body and the fraction, with the state as the step left
+// it, when a body's departed mass would exceed kDepartedBulkFraction of its mass.
 void remove_departed_points(State& s);
 
 }  // namespace coldspray::mpm
