@@ -601,10 +601,10 @@ def command_section(options):
 # --------------------------------------------------------------------------------------
 
 QUANTITY_UNITS = {"kinetic": "J", "elastic": "J", "plastic_work": "J", "viscous": "J",
-                  "absorbed": "J", "contact": "J", "total": "J", "vx": "m/s", "vy": "m/s",
-                  "vz": "m/s", "contact_fx": "N", "contact_fy": "N", "contact_fz": "N",
+                  "absorbed": "J", "contact": "J", "departed": "J", "total": "J", "vx": "m/s",
+                  "vy": "m/s", "vz": "m/s", "contact_fx": "N", "contact_fy": "N", "contact_fz": "N",
                   "v_rest": "m/s", "plastic_energy_density": "J/m$^3$", "max_temperature": "K",
-                  "pbcp": "%"}
+                  "pbcp": "%", "departed_mass": "kg"}
 
 
 def resolve_column(history, column, body):

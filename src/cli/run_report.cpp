@@ -34,16 +34,23 @@ Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostr
   out << fmt::format(
       "done: {} steps to t = {:.4g} ns in {:.1f} s on {} threads ({:.3g} particle-steps/s)\n"
       "energy: kinetic {:.4g} J, elastic {:.4g} J, plastic work {:.4g} J, viscous {:.4g} J, "
-      "absorbed {:.4g} J, contact {:.4g} J; budget error {:.2e}\n",
+      "absorbed {:.4g} J, contact {:.4g} J{}; budget error {:.2e}\n",
       s.steps, s.time * 1e9, s.wall_seconds, s.threads, s.particle_steps_per_second,
       s.energy.kinetic, s.energy.elastic(), s.energy.plastic_work, s.energy.viscous,
-      s.energy.absorbed, s.energy.contact, s.energy_relative_error());
-  for (const auto& b : s.bodies)
+      s.energy.absorbed, s.energy.contact,
+      s.energy.departed != 0.0 ? fmt::format(", departed {:.4g} J", s.energy.departed) : "",
+      s.energy_relative_error());
+  for (const auto& b : s.bodies) {
     out << fmt::format(
         "  {}: velocity ({:.4g}, {:.4g}, {:.4g}) m/s, max eqps {:.3g}, mean eqps {:.3g}, "
-        "max T {:.0f} K\n",
+        "max T {:.0f} K",
         b.name, b.velocity[0], b.velocity[1], b.velocity[2], b.max_eqps, b.mean_eqps,
         b.max_temperature);
+    if (b.departed.points > 0)
+      out << fmt::format("; {} points, {:.3g} % of its mass, left the grid", b.departed.points,
+                         100.0 * b.departed.mass / (b.mass + b.departed.mass));
+    out << "\n";
+  }
   return {s, options.out_dir};
 }
 

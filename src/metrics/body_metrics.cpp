@@ -39,6 +39,7 @@ std::vector<BodyMetrics> body_metrics(const mpm::State& s) {
         for (int d = 0; d < 3; ++d)
           m.contact_force[d] += s.contact_result.impulse[b * bodies + o][d] / s.dt;
     m.impact = impact_measures(s, b);
+    m.departed = r.departed;
     out.push_back(std::move(m));
   }
   return out;

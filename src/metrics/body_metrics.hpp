@@ -12,7 +12,7 @@ namespace coldspray::metrics {
 
 struct BodyMetrics {
   std::string name;
-  double mass = 0.0;                   // kg (the ring masses summed, in r-z)
+  double mass = 0.0;                   // kg (the ring masses summed, in r-z), on the grid
   std::array<double, 3> velocity{};    // mass-averaged, m/s
   std::array<double, 3> centroid{};    // mass-averaged, m (x = r in r-z)
   std::array<double, 3> extent_min{};  // m
@@ -22,6 +22,7 @@ struct BodyMetrics {
   double max_temperature = 0.0;           // K
   std::array<double, 3> contact_force{};  // from all other bodies over the last step, N
   ImpactMeasures impact;
+  mpm::Departed departed;  // the points that have left the grid (the rest are of those on it)
 };
 
 // In index order: independent of the thread count.

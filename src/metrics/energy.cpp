@@ -15,6 +15,13 @@ EnergyBudget energy_budget(const mpm::State& s) {
     e.contact -= P.contact_work[p];
   }
   for (const mpm::AbsorbingPoint& a : s.absorbing) e.absorbed += a.absorbed;
+  for (const mpm::BodyRange& b : s.bodies) {
+    const mpm::Departed& d = b.departed;
+    e.viscous += d.viscous_work;
+    e.absorbed += d.absorbed;
+    e.contact -= d.contact_work;
+    e.departed += d.kinetic + d.internal;
+  }
   return e;
 }
 

@@ -87,7 +87,7 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
   m.v_rest = rest_mass > 0.0 ? rest_momentum / rest_mass : kNaN;
   m.contact_area *= whole_body_factor(s, r);
   m.bonded_area *= whole_body_factor(s, r);
-  m.jetted_fraction = jetted / mass;
+  m.jetted_fraction = (jetted + r.departed.mass) / (mass + r.departed.mass);
   m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;
   m.pbcp = touched > 0.0 ? 100.0 * bonded / touched : 0.0;

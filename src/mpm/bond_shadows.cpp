@@ -4,21 +4,28 @@
 #include <cassert>
 #include <utility>
 
+#include "mpm/erase_indices.hpp"
+
 namespace coldspray::mpm {
 
 void BondShadows::follow(const std::vector<bonding::BondLaw>& laws, const Points& P) {
   laws_ = laws;
   ids_.resize(laws.size());
   for (std::size_t k = 0; k < laws.size(); ++k) ids_[k] = k;
-  column_.assign(P.size(), -1);
+  column_.resize(P.size());
+  for (std::size_t p = 0; p < P.size(); ++p) column_[p] = P.surface[p] ? 0 : -1;
+  number_columns();
+  bond_.assign(laws.size(), std::vector<double>(surface_.size(), 0.0));
+  bond_sum_.assign(laws.size(), {});
+}
+
+void BondShadows::number_columns() {
   surface_.clear();
-  for (std::size_t p = 0; p < P.size(); ++p)
-    if (P.surface[p]) {
+  for (std::size_t p = 0; p < column_.size(); ++p)
+    if (column_[p] >= 0) {
       column_[p] = static_cast<std::int32_t>(surface_.size());
       surface_.push_back(p);
     }
-  bond_.assign(laws.size(), std::vector<double>(surface_.size(), 0.0));
-  bond_sum_.assign(laws.size(), {});
 }
 
 void BondShadows::grow(std::size_t p, const Eigen::Matrix3d& stress, double d_eqps,
@@ -81,6 +88,17 @@ void BondShadows::drop(std::size_t k) {
   ids_.pop_back();
   bond_.pop_back();
   bond_sum_.pop_back();
+}
+
+// In the rare step where points leave: the list of their columns is allocated.
+void BondShadows::remove_points(const std::vector<std::size_t>& gone) {
+  if (column_.empty()) return;  // never followed any law
+  std::vector<std::size_t> gone_columns;
+  for (const std::size_t p : gone)
+    if (column_[p] >= 0) gone_columns.push_back(static_cast<std::size_t>(column_[p]));
+  erase_indices(column_, gone);
+  for (auto& bond : bond_) erase_indices(bond, gone_columns);
+  number_columns();
 }
 
 }  // namespace coldspray::mpm

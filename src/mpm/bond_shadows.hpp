@@ -52,8 +52,14 @@ class BondShadows {
   void clear_bond(Points& P) const;
   // Stops following shadow k (its run has left the trajectory); the last shadow takes its index.
   void drop(std::size_t k);
+  // The points `gone` (ascending) have left the run (mpm/departures.hpp): their columns go, the
+  // other columns keep their order.
+  void remove_points(const std::vector<std::size_t>& gone);
 
  private:
+  // Numbers the points with a column (column_ >= 0) in point order, and lists them in surface_.
+  void number_columns();
+
   std::vector<bonding::BondLaw> laws_;
   std::vector<std::size_t> ids_;
   std::vector<std::int32_t> column_;       // per point: its column among the surface points, or -1

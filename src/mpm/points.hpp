@@ -46,6 +46,9 @@ struct Points {
   std::vector<std::uint16_t> body;     // index into the run's body list
   std::vector<std::uint8_t> surface;   // 1 on the body's initial surface (bonding set S)
   std::vector<double> initial_z;       // z at t = 0, m (crater depth)
+  // The point's index among its body's points at t = 0, which it keeps when points before it
+  // leave the grid (mpm/departures.hpp): ascending within each body.
+  std::vector<std::uint32_t> id;
 
   // Bonding (thesis Chapter 4): D_bond, and whether the surface point has touched another
   // body (ever, and in this step, with its body's outward contact normal). `bonded_to` keeps the
@@ -62,6 +65,22 @@ struct Points {
 
   std::size_t size() const { return mass.size(); }
   void resize(std::size_t n);
+
+  // Calls f(v) for every per-point array v (a std::vector of doubles or of integers).
+  template <class F>
+  void for_each_array(F&& f) {
+    for (auto* a : {&position, &velocity, &half_width, &contact_normal, &displacement})
+      for (auto& v : *a) f(v);
+    for (auto& v : stress) f(v);
+    for (auto* v : {&mass, &volume0, &eqps, &eqps_rate, &return_slope, &temperature, &energy, &J,
+                    &flow_stress, &shear_modulus, &sound_speed, &bulk_viscosity, &plastic_work,
+                    &viscous_work, &contact_work, &initial_z, &bond})
+      f(*v);
+    for (auto* v : {&surface, &touched, &touching}) f(*v);
+    f(body);
+    f(bonded_to);
+    f(id);
+  }
 };
 
 }  // namespace coldspray::mpm

@@ -302,6 +302,7 @@ State build_state(const case_file::Case& c) {
       P.body[p] = static_cast<std::uint16_t>(b);
       P.surface[p] = seeded[b].points.outside[i] != 0;
       P.initial_z[p] = P.position[2][p];
+      P.id[p] = static_cast<std::uint32_t>(i);
     }
     s.bodies.push_back(std::move(range));
   }

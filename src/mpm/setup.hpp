@@ -13,7 +13,8 @@ State build_state(const case_file::Case& c);
 
 // The margin added around the bodies when grid.min/max are not given: half the bodies' extent
 // along each axis (at least 4 cells), so that rebounding and jetted material stays on the grid
-// through a typical impact. A point that still leaves the domain stops the run (exit 3).
+// through a typical impact. A point that still leaves the domain leaves the run
+// (mpm/departures.hpp).
 inline constexpr double kGridMarginFraction = 0.5;
 inline constexpr int kGridMarginMinCells = 4;
 

@@ -23,6 +23,20 @@
 
 namespace coldspray::mpm {
 
+// What a body's points carried off the grid when they left it (mpm/departures.hpp), summed over
+// them in index order at the end of the step in which each left.
+struct Departed {
+  std::size_t points = 0;
+  double mass = 0.0;                 // kg
+  std::array<double, 3> momentum{};  // kg m/s
+  double kinetic = 0.0;              // 1/2 m v^2, J
+  double internal = 0.0;             // E V0, J
+  double plastic_work = 0.0;         // J, part of internal
+  double viscous_work = 0.0;         // J
+  double contact_work = 0.0;         // J
+  double absorbed = 0.0;             // work done on their dashpots, J (absorbing-face points)
+};
+
 struct BodyRange {
   std::string name;
   std::size_t begin = 0;  // the body's points are [begin, end)
@@ -35,6 +49,7 @@ struct BodyRange {
   // axis r = 0): the whole body is the modelled part and its mirror image, so its centre lies on
   // the plane and its areas are twice the modelled part's.
   std::array<std::optional<double>, 2> mirror_plane{};
+  Departed departed{};  // the body's points that have left the grid
 };
 
 // A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give
@@ -119,6 +134,7 @@ struct State {
   bool heat_conduction = false;
   double max_diffusivity = 0.0;
   Fault fault;
+  std::size_t departing = 0;  // points that left the grid in this step (mpm/departures.hpp)
 };
 
 // Calls f.template operator()<Shape, Axisymmetric>() for the run's shape function and geometry:

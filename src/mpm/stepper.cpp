@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "mpm/boundaries.hpp"
+#include "mpm/departures.hpp"
 #include "mpm/heat_conduction.hpp"
 #include "mpm/phases.hpp"
 
@@ -183,9 +184,10 @@ void step_from_contact(State& s) {
                                    [p](const BodyRange& b) { return p >= b.begin && p < b.end; });
     throw RunFault(fmt::format(
         "body '{}', point {} at ({:.4g}, {:.4g}, {:.4g}) um, t = {:.6g} ns: {}", body->name,
-        p - body->begin, s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
+        s.points.id[p], s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
         s.points.position[2][p] * 1e6, s.time * 1e9, s.fault.cause));
   }
+  if (s.departing > 0) remove_departed_points(s);
 }
 
 void step(State& s) {

@@ -9,8 +9,10 @@ namespace coldspray::mpm {
 // solver.dt_scale, that fraction of h / c of the undeformed materials).
 double stable_time_step(const State& s, double cfl);
 
-// Advances the state by s.dt. Throws RunFault (naming body, point, time and cause) when a point
-// leaves the grid or its state stops being finite; the state is then that of the failed step.
+// Advances the state by s.dt; the points that moved out of the grid leave it at the end of the
+// step (mpm/departures.hpp). Throws RunFault (naming body, point, time and cause) when a point's
+// state stops being finite, a point crosses the axis in r-z or a body's bulk leaves the grid; the
+// state is then that of the failed step.
 void step(State& s);
 
 // step() in two halves, split where the contact step decides which nodes are bonded, so that a

@@ -10,6 +10,7 @@
 #include "materials/model_dispatch.hpp"
 #include "materials/stress_update_lanes.hpp"
 #include "mpm/artificial_viscosity.hpp"
+#include "mpm/departures.hpp"
 #include "mpm/material_state.hpp"
 #include "mpm/phases.hpp"
 
@@ -17,23 +18,27 @@ namespace coldspray::mpm {
 
 namespace {
 
-void check_point(const State& s, std::size_t p, Fault& fault) {
+// After point p's position update: a point that moved out of the domain leaves the run at the
+// end of the step (mpm/departures.hpp); a non-finite state or, in r-z, a crossing of the axis
+// is a fault.
+void check_point(State& s, std::size_t p) {
   const Points& P = s.points;
-  const GridLayout& L = s.layout;
   const char* cause = nullptr;
   for (int d = 0; d < 3 && cause == nullptr; ++d)
     if (!std::isfinite(P.position[d][p]) || !std::isfinite(P.velocity[d][p]) ||
         !std::isfinite(P.stress[d][p]))
       cause = "non-finite position, velocity or stress";
-  for (int d = 0; d < 3 && cause == nullptr; ++d) {
-    if (L.nodes[d] == 1) continue;
-    // The domain: inside the ghost layer (mpm/setup.cpp).
-    const double lo = L.origin[d] + L.h, hi = L.extent(d) - L.h;
-    if (P.position[d][p] < lo || P.position[d][p] > hi) cause = "left the grid";
-  }
-  if (L.axisymmetric && cause == nullptr && P.position[0][p] <= 0.0)
+  // (Before the domain test, whose lower r bound is the axis.)
+  if (s.layout.axisymmetric && cause == nullptr && P.position[0][p] <= 0.0)
     cause = "crossed the axis r = 0";
-  if (cause == nullptr) return;
+  if (cause == nullptr) {
+    if (outside_domain(s.layout, P, p)) {
+#pragma omp atomic
+      ++s.departing;
+    }
+    return;
+  }
+  Fault& fault = s.fault;
 #pragma omp critical(coldspray_fault)
   if (p < fault.point) {
     fault.point = p;
@@ -124,7 +129,7 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
         P.position[d][p] += P.displacement[d][p];
         P.half_width[d][p] *= 1.0 + k.strain_increment(d, d);
       }
-      check_point(s, p, s.fault);
+      check_point(s, p);
     };
 
     for (std::size_t batch = first_batch; batch < end_batch; ++batch) {

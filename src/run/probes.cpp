@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "materials/symmetric_tensor.hpp"
@@ -31,6 +33,16 @@ std::size_t nearest_point(const mpm::State& s, const case_file::Vec3& x) {
     }
   }
   return best;
+}
+
+// The point's index now, if it is still on the grid: ids ascend within a body.
+std::optional<std::size_t> find_point(const mpm::State& s, std::uint16_t body, std::uint32_t id) {
+  const mpm::BodyRange& r = s.bodies[body];
+  const auto first = s.points.id.begin();
+  const auto at = std::lower_bound(first + static_cast<std::ptrdiff_t>(r.begin),
+                                   first + static_cast<std::ptrdiff_t>(r.end), id);
+  if (at == first + static_cast<std::ptrdiff_t>(r.end) || *at != id) return std::nullopt;
+  return static_cast<std::size_t>(at - first);
 }
 
 }  // namespace
@@ -67,7 +79,7 @@ ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm:
   for (const auto& probe : probes) {
     const std::size_t p = nearest_point(s, probe.position);
     for (const auto& f : probe.fields) {
-      columns_.push_back({p, probe_field_index(f)});
+      columns_.push_back({s.points.body[p], s.points.id[p], probe_field_index(f)});
       header += fmt::format(",{}.{}", probe.name, f);
     }
   }
@@ -77,7 +89,11 @@ ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm:
 void ProbeWriter::record(const mpm::State& s) {
   if (columns_.empty()) return;
   std::string row = fmt::format("{:.10g}", s.time);
-  for (const Column& c : columns_) row += fmt::format(",{:.10g}", probe_value(s, c.point, c.field));
+  for (const Column& c : columns_) {
+    const std::optional<std::size_t> p = find_point(s, c.body, c.id);
+    row += fmt::format(",{:.10g}",
+                       p ? probe_value(s, *p, c.field) : std::numeric_limits<double>::quiet_NaN());
+  }
   out_->append(row + "\n");
 }
 

@@ -1,7 +1,9 @@
 // Probes: Lagrangian gauges, like the embedded gauges of plate-impact experiments. Each follows
-// the material point nearest to its position at t = 0 and records the requested fields.
+// the material point nearest to its position at t = 0 and records the requested fields; NaN once
+// that point has left the grid (mpm/departures.hpp).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -21,8 +23,11 @@ class ProbeWriter {
   void record(const mpm::State& s);
 
  private:
+  // The point by its body and its index at t = 0 (Points::id), which points leaving the grid do
+  // not change.
   struct Column {
-    std::size_t point;
+    std::uint16_t body;
+    std::uint32_t id;
     int field;
   };
   std::vector<Column> columns_;

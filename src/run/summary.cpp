@@ -25,6 +25,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                  {"viscous", s.energy.viscous},
                  {"absorbed", s.energy.absorbed},
                  {"contact", s.energy.contact},
+                 {"departed", s.energy.departed},
                  {"total", s.energy.total()},
                  {"total_initial", s.total_energy_initial},
                  {"relative_error", s.energy_relative_error()}};
@@ -56,7 +57,14 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                       {"crater_depth", m.crater_depth},
                       {"flattening_ratio", m.flattening_ratio},
                       {"contact_area", m.contact_area},
-                      {"bonded_area", m.bonded_area}};
+                      {"bonded_area", m.bonded_area},
+                      {"departed",
+                       {{"points", b.departed.points},
+                        {"mass", b.departed.mass},
+                        {"momentum", b.departed.momentum},
+                        {"kinetic_energy", b.departed.kinetic},
+                        {"internal_energy", b.departed.internal},
+                        {"plastic_work", b.departed.plastic_work}}}};
   }
   j["bodies"] = bodies;
   // The verdict over the bodies that moved in z at t = 0 (the particles).

@@ -69,6 +69,20 @@ TEST(ImpactMetrics, CountsByHand) {
   EXPECT_FALSE(m.bonded);
 }
 
+// Points that left the grid (mpm/departures.hpp) count as jetted; the rest of the measures are
+// of the points on the grid.
+TEST(ImpactMetrics, PointsThatLeftTheGridCountAsJetted) {
+  mpm::State s = six_points();
+  s.bodies[0].departed.points = 2;
+  s.bodies[0].departed.mass = 2e-15;
+  const ImpactMeasures m = impact_measures(s, 0);
+  // Point 4 and the two departed points, of 6 + 2 points of 1e-15 kg.
+  EXPECT_NEAR(m.jetted_fraction, 3.0 / 8.0, 1e-15);
+  EXPECT_NEAR(m.v_rest, 0.8, 1e-12);
+  EXPECT_NEAR(m.cor, 14.0 / 6.0 / 800.0, 1e-15);
+  EXPECT_NEAR(m.pbcp, 75.0, 1e-12);
+}
+
 TEST(ImpactMetrics, BondedWhenBothTolerancesHold) {
   mpm::State s = six_points();
   s.points.velocity[2][1] = 0.0;  // v_rest = (1 + 0 + 0.5 + 0.5 + 0) / 5 = 0.4 m/s
