@@ -31,13 +31,13 @@ std::size_t count_entries(const fs::path& folder) {
 }
 
 // A 4 um particle on a 1 um grid for 3 ns with the thesis' energy parameters. At 3 ns nothing has
-// come to rest, so the verdict's tolerances are eased through --set to make the search bracket
-// (500 m/s: pbcp 50 %, not bonded; 1200 m/s: pbcp 82 %, bonded); the test is of the search's
-// machinery, not of the physics.
+// come to rest, so the verdict is read over the last 1 ns with a threshold of 50 m/s to make the
+// search bracket: from 200 m/s (no point bonds: rebounded) to 1200 m/s (bonded after two
+// extensions to 5 ns); the test is of the search's machinery, not of the physics.
 const std::string kVcrit =
-    "vcrit --material al-ptw --diameters 4um --grid 1um/0.5um --end-time 3ns --tol 100m/s "
-    "--Gc 1503.74J/m^2 --Gc-rate 2.271J/m^2/us --threads-per-job 1 --out vc "
-    "--set metrics.bonded_pbcp=70 --set metrics.bonded_rest_speed=50m/s";
+    "vcrit --material al-ptw --diameters 4um --grid 1um/0.5um --end-time 3ns --vmin 200m/s "
+    "--tol 100m/s --Gc 1503.74J/m^2 --Gc-rate 2.271J/m^2/us --threads-per-job 1 --out vc "
+    "--set metrics.verdict_window=1ns --set metrics.bonded_separation_speed=50m/s";
 
 TEST(CliStudies, VcritWritesItsTableAndReusesItsRuns) {
   const std::string dir = make_temp_dir();
@@ -45,14 +45,24 @@ TEST(CliStudies, VcritWritesItsTableAndReusesItsRuns) {
   ASSERT_EQ(first.status, 0) << first.output;
   const fs::path vc = fs::path(dir) / "vc";
   const std::string table = read_text(vc / "vcrit.csv");
-  EXPECT_EQ(table.rfind("diameter_um,vcrit_ms,lower_ms,pbcp,v_rest,runs_used,status\n", 0), 0u)
+  EXPECT_EQ(table.rfind("diameter_um,vcrit_ms,lower_ms,margin,lower_margin,lower_outcome,pbcp,"
+                        "v_rest,runs_used,undecided,status\n",
+                        0),
+            0u)
       << table;
   EXPECT_NE(table.find(",found\n"), std::string::npos) << table;
-  EXPECT_NE(read_text(vc / "vcrit_runs.csv").find("4,500,ok,0,"), std::string::npos);
+  const std::string runs = read_text(vc / "vcrit_runs.csv");
+  EXPECT_EQ(runs.rfind("diameter_um,velocity_ms,status,outcome,bonded,separation_speed,margin,"
+                       "extensions,cor,v_rest,abp,pbcp\n",
+                       0),
+            0u)
+      << runs;
+  EXPECT_NE(runs.find("4,200,ok,rebounded,0,"), std::string::npos) << runs;
+  EXPECT_NE(runs.find("4,1200,ok,bonded,1,"), std::string::npos) << runs;
   // The progress line: after every impact, and once the diameter is settled.
   EXPECT_NE(first.output.find("vcrit: 0/1 diameters, 1 impacts (1 simulated)"), std::string::npos)
       << first.output;
-  EXPECT_NE(first.output.find("d 4 um at 500 m/s not bonded"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("d 4 um at 200 m/s rebounded"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("vcrit: 1/1 diameters"), std::string::npos) << first.output;
   const std::size_t folders = count_entries(vc);
 
@@ -147,6 +157,8 @@ TEST(CliStudies, CalibrationFileErrorsNameLineAndKey) {
       {"bad grid", "grid: 1um/0.5um", "grid: 1um", "calib.yaml:5:7: key 'grid'"},
       {"bad transform", "[identity, log10]", "[identity, log]", "key 'fit.transform'"},
       {"wrong model", "model: energy", "model: strain", "key 'parameters.critical_strain'"},
+      {"retired metrics key", "{verdict_window: 1 ns}", "{bonded_rest_speed: 1 m/s}",
+       "calib.yaml:15:11: key 'metrics.bonded_rest_speed': was removed"},
   };
   for (const BadFile& bad : cases) {
     const std::string dir = make_temp_dir();
