@@ -24,7 +24,7 @@ constexpr case_file::WholeNumber kCount{1};
 
 constexpr std::array<std::string_view, 2> kModels{"energy", "strain"};
 constexpr std::array<std::string_view, 2> kSpacings{"linear", "log"};
-constexpr std::array<std::string_view, 2> kClassifyBy{"cor-pbcp", "cor-abp"};
+constexpr std::array<std::string_view, 3> kClassifyBy{"verdict", "cor-pbcp", "cor-abp"};
 constexpr std::array<std::string_view, 2> kTransforms{"identity", "log10"};
 
 // One parameter's range; its unit is that of the parameter (eq 4.16b: J/m^2, J/m^2/s; eq 4.4:
@@ -68,9 +68,8 @@ void fields(IO& io, ParametersEntry& p) {
 }
 
 struct ClassifyEntry {
-  std::string by = "cor-pbcp";
-  double cor_max = 0.003;
-  std::optional<double> pbcp_min, abp_min;
+  std::string by = "verdict";
+  std::optional<double> cor_max, pbcp_min, abp_min;
 };
 template <class IO>
 void fields(IO& io, ClassifyEntry& c) {
@@ -85,6 +84,11 @@ void fields(IO& io, ClassifyEntry& c) {
            "is for by: cor-pbcp, not cor-abp");
   io.check(c.by != "cor-pbcp" || !c.abp_min.has_value(), "abp_min",
            "is for by: cor-abp, not cor-pbcp");
+  constexpr const char* kTolerance =
+      "is a tolerance of by: cor-pbcp or cor-abp, not of by: verdict (the runs' own verdicts)";
+  io.check(c.by != "verdict" || !c.cor_max.has_value(), "cor_max", kTolerance);
+  io.check(c.by != "verdict" || !c.pbcp_min.has_value(), "pbcp_min", kTolerance);
+  io.check(c.by != "verdict" || !c.abp_min.has_value(), "abp_min", kTolerance);
 }
 
 struct SizeEntry {
@@ -136,9 +140,10 @@ void fields(IO& io, FileEntry& f) {
 
 studies::Classification classification(const ClassifyEntry& c) {
   studies::Classification rule;
-  rule.by = c.by == "cor-abp" ? studies::Classification::By::CorAbp
-                              : studies::Classification::By::CorPbcp;
-  rule.cor_max = c.cor_max;
+  rule.by = c.by == "cor-abp"    ? studies::Classification::By::CorAbp
+            : c.by == "cor-pbcp" ? studies::Classification::By::CorPbcp
+                                 : studies::Classification::By::Verdict;
+  if (c.cor_max) rule.cor_max = *c.cor_max;
   if (c.pbcp_min) rule.pbcp_min = *c.pbcp_min;
   if (c.abp_min) rule.abp_min = *c.abp_min;
   return rule;

@@ -102,7 +102,7 @@ TEST(CliStudies, CalibrateWritesRunsAndDiagnosesOneClass) {
   const fs::path cal = fs::path(dir) / "cal";
   const std::string runs = read_text(cal / "runs.csv");
   EXPECT_EQ(runs.rfind("grid,size,diameter_um,velocity_ms,critical_energy,critical_energy_rate,"
-                       "status,cor,abp,pbcp,v_rest,y\n",
+                       "status,outcome,separation_speed,margin,cor,abp,pbcp,v_rest,y\n",
                        0),
             0u)
       << runs;
@@ -114,6 +114,34 @@ TEST(CliStudies, CalibrateWritesRunsAndDiagnosesOneClass) {
   const auto again = run_coldspray(command, dir);
   EXPECT_NE(again.output.find("0 run now (0 failed), 8 finished before"), std::string::npos)
       << again.output;
+}
+
+// Classified by the runs' verdicts (the default, without `classify`), the tiny calibration's
+// runs are all undecided after their two extensions, at 5 ns (the halves of their last 1 ns
+// differ by 12-90 m/s, the particles still in the impact): left out of the fit, counted, listed
+// with an empty y, and diagnosed.
+TEST(CliStudies, CalibrateByTheVerdictLeavesUndecidedRunsOut) {
+  const std::string dir = make_temp_dir();
+  std::string text = read_text(kCalibration);
+  const std::size_t line = text.find("classify:");
+  text.erase(line, text.find('\n', line) - line);
+  std::ofstream(fs::path(dir) / "calib.yaml") << text;
+  const auto r =
+      run_coldspray("calibrate calib.yaml --out cal --quiet --jobs 2 --threads-per-job 1", dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(
+      r.output.find("4 um at 1000 m/s: 4 runs, 0 bonded, 0 not bonded, 4 undecided (left out) "
+                    "(by the runs' verdicts)"),
+      std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("let undecided runs go on longer"), std::string::npos) << r.output;
+  const std::string runs = read_text(fs::path(dir) / "cal" / "runs.csv");
+  EXPECT_NE(runs.find("1um/0.5um,4um,4,1000,100,10000,ok,undecided,"), std::string::npos) << runs;
+  EXPECT_NE(runs.find(",\n1um/0.5um,4um,4,1000,100,1000000000,ok,undecided,"), std::string::npos)
+      << runs;  // the row before ends with an empty y
+  const std::string json = read_text(fs::path(dir) / "cal" / "calibration.json");
+  EXPECT_NE(json.find("\"undecided\": 4"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"by\": \"verdict\""), std::string::npos) << json;
 }
 
 // The shipped calibration files read without error, and every run they would make is a valid
@@ -159,6 +187,8 @@ TEST(CliStudies, CalibrationFileErrorsNameLineAndKey) {
       {"wrong model", "model: energy", "model: strain", "key 'parameters.critical_strain'"},
       {"retired metrics key", "{verdict_window: 1 ns}", "{bonded_rest_speed: 1 m/s}",
        "calib.yaml:15:11: key 'metrics.bonded_rest_speed': was removed"},
+      {"a tolerance with the verdict", "{by: cor-pbcp,", "{by: verdict,",
+       "calib.yaml:13:34: key 'classify.cor_max': is a tolerance of by: cor-pbcp or cor-abp"},
   };
   for (const BadFile& bad : cases) {
     const std::string dir = make_temp_dir();
