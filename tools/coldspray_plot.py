@@ -771,6 +771,23 @@ PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_strain_rate": (r"$\dot\epsilon_c$ (1/s)", 1.0)}
 
 
+def plot_verdicts(ax, rows):
+    """A size's runs classified by their verdicts (docs/bonding.md): margin against PBCP."""
+    for outcome, colour, label in (("bonded", "C2", "bonded"), ("rebounded", "C3", "rebounded"),
+                                   ("undecided", "0.6", "undecided (left out)")):
+        pick = [r for r in rows if r["outcome"] == outcome]
+        if pick:
+            ax.plot([_to_float(r["pbcp"]) for r in pick], [_to_float(r["margin"]) for r in pick],
+                    "o", color=colour, label=label, ms=4)
+    ax.axhline(0.0, color="k", lw=1)
+    ax.set_yscale("symlog", linthresh=1.0)
+    ax.margins(0.08)
+    ax.set_xlabel("PBCP (%)")
+    ax.set_ylabel("margin (m/s): threshold - separation speed")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small")
+
+
 def command_calibration(options):
     folder = require_dir(options.dir)
     result = read_json(os.path.join(folder, "calibration.json"))
@@ -783,6 +800,10 @@ def command_calibration(options):
     axes = axes[0]
     for ax, size in zip(axes, sizes):  # Fig 5.3a/b: restitution vs PBCP or ABP
         rule = size["classify"]
+        if rule["by"] == "verdict":
+            plot_verdicts(ax, [r for r in rows if r["size"] == size["size"] and r["status"] == "ok"])
+            ax.set_title(f"{size['diameter_um']:g} um at {size['velocity_ms']:g} m/s")
+            continue
         measure = "pbcp" if rule["by"] == "cor-pbcp" else "abp"
         mine = [r for r in rows if r["size"] == size["size"] and r["y"] != ""]
         for y, colour, label in (("1", "C2", "bonded"), ("0", "C3", "not bonded")):

@@ -130,11 +130,13 @@ struct Bonding {
   friend bool operator==(const Bonding&, const Bonding&) = default;
 };
 
-// The impact metrics and the bonded verdict (thesis §5.2.2).
+// The impact metrics (thesis §5.2.2) and the bonded verdict over the run's last window
+// (metrics/verdict.hpp, docs/bonding.md).
 struct ImpactMetrics {
-  double rest_speed_limit = 60.0;  // m/s: v_rest averages points at or below this speed
-  double bonded_pbcp = 5.0;        // %: bonded needs pbcp >= this
-  double bonded_rest_speed = 0.6;  // m/s: and |v_rest| <= this
+  double rest_speed_limit = 60.0;        // m/s: v_rest averages points at or below this speed
+  double bonded_separation_speed = 2.0;  // m/s: bonded needs the window's mean at most this
+  double verdict_window = 20e-9;         // s: the verdict reads the run's last window
+  int verdict_extensions = 2;            // windows a run is extended by while undecided, at most
 
   friend bool operator==(const ImpactMetrics&, const ImpactMetrics&) = default;
 };

@@ -149,9 +149,10 @@ void fields(IO& io, Bonding& b) {
 template <class IO>
 void fields(IO& io, ImpactMetrics& m) {
   io.quantity("rest_speed_limit", m.rest_speed_limit, units::kVelocity, kOptional, kPositive);
-  io.quantity("bonded_pbcp", m.bonded_pbcp, units::kDimensionless, kOptional, kNonNegative);
-  io.check(m.bonded_pbcp <= 100.0, "bonded_pbcp", "is a percentage: at most 100");
-  io.quantity("bonded_rest_speed", m.bonded_rest_speed, units::kVelocity, kOptional, kNonNegative);
+  io.quantity("bonded_separation_speed", m.bonded_separation_speed, units::kVelocity, kOptional,
+              kPositive);
+  io.quantity("verdict_window", m.verdict_window, units::kTime, kOptional, kPositive);
+  io.scalar("verdict_extensions", m.verdict_extensions, WholeNumber{0}, kOptional);
 }
 
 template <class IO>

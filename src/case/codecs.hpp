@@ -35,6 +35,15 @@ struct Flag {
   std::string format(bool value) const { return value ? "true" : "false"; }
 };
 
+// A whole number of at least `min`.
+struct WholeNumber {
+  int min = 0;
+
+  std::string expected() const { return "a whole number >= " + std::to_string(min); }
+  void parse(std::string_view text, int& value) const;
+  std::string format(int value) const { return std::to_string(value); }
+};
+
 // Text restricted to a fixed set of words.
 struct Keywords {
   std::span<const std::string_view> words;

@@ -1,6 +1,7 @@
 #include "case/reader.hpp"
 
 #include "case/case_materials.hpp"
+#include "case/retired_keys.hpp"
 #include "case/shortest_number.hpp"
 #include "case/suggest.hpp"
 #include "core/error.hpp"
@@ -86,8 +87,10 @@ void Reader::missing(std::string_view key, const std::string& hint) const {
 void Reader::reject_unknown(std::span<const std::string_view> known) const {
   for (const Entry& e : entries_) {
     if (std::find(known.begin(), known.end(), e.name) == known.end()) {
-      throw InputError(doc_.where(e.key, e.value), path_of(e.name),
-                       unknown_word("key", e.name, known));
+      const std::string path = path_of(e.name);
+      const auto retired = retired_key(path);
+      throw InputError(doc_.where(e.key, e.value), path,
+                       retired ? std::string(*retired) : unknown_word("key", e.name, known));
     }
   }
 }

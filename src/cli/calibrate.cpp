@@ -28,10 +28,12 @@ void print_results(const CalibrationFile& file, const std::vector<studies::GridR
     for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
       const studies::CalibrationSize& size = plan.sizes[s];
       const studies::SizeResult& r = g.sizes[s];
-      std::cout << fmt::format("  {} um at {:.6g} m/s: {} runs, {} bonded, {} not bonded{} ({})",
-                               size.diameter * 1e6, size.velocity, r.runs, r.bonded, r.not_bonded,
-                               r.failed ? fmt::format(", {} failed or pending", r.failed) : "",
-                               studies::describe(size.classify));
+      std::cout << fmt::format(
+          "  {} um at {:.6g} m/s: {} runs, {} bonded, {} not bonded{}{} ({})", size.diameter * 1e6,
+          size.velocity, r.runs, r.bonded, r.not_bonded,
+          r.undecided ? fmt::format(", {} undecided (left out)", r.undecided) : "",
+          r.failed ? fmt::format(", {} failed or pending", r.failed) : "",
+          studies::describe(size.classify));
       if (r.fit)
         std::cout << fmt::format("; fit accuracy {:.3g} in {} iterations{}", r.fit->accuracy,
                                  r.fit->iterations, r.fit->converged ? "" : " (not converged)");

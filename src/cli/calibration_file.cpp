@@ -20,25 +20,11 @@ namespace {
 using case_file::kOptional;
 using case_file::kRequired;
 
-// A whole number of at least 1.
-struct Count {
-  std::string expected() const { return "a whole number >= 1"; }
-  void parse(std::string_view text, int& value) const {
-    std::size_t used = 0;
-    try {
-      value = std::stoi(std::string(text), &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != text.size() || used == 0 || value < 1)
-      throw case_file::BadValue("expected " + expected() + ", got '" + std::string(text) + "'");
-  }
-  std::string format(int value) const { return std::to_string(value); }
-};
+constexpr case_file::WholeNumber kCount{1};
 
 constexpr std::array<std::string_view, 2> kModels{"energy", "strain"};
 constexpr std::array<std::string_view, 2> kSpacings{"linear", "log"};
-constexpr std::array<std::string_view, 2> kClassifyBy{"cor-pbcp", "cor-abp"};
+constexpr std::array<std::string_view, 3> kClassifyBy{"verdict", "cor-pbcp", "cor-abp"};
 constexpr std::array<std::string_view, 2> kTransforms{"identity", "log10"};
 
 // One parameter's range; its unit is that of the parameter (eq 4.16b: J/m^2, J/m^2/s; eq 4.4:
@@ -53,7 +39,7 @@ template <class IO, units::Dimension D>
 void fields(IO& io, AxisEntry<D>& a) {
   io.quantity("from", a.from, D, kRequired, case_file::kPositive);
   io.quantity("to", a.to, D, kRequired, case_file::kPositive);
-  io.scalar("count", a.count, Count{}, kRequired);
+  io.scalar("count", a.count, kCount, kRequired);
   io.scalar("spacing", a.spacing, case_file::Keywords{kSpacings}, kOptional);
   io.check(a.from < a.to, "to", "must be greater than from");
 }
@@ -82,9 +68,8 @@ void fields(IO& io, ParametersEntry& p) {
 }
 
 struct ClassifyEntry {
-  std::string by = "cor-pbcp";
-  double cor_max = 0.003;
-  std::optional<double> pbcp_min, abp_min;
+  std::string by = "verdict";
+  std::optional<double> cor_max, pbcp_min, abp_min;
 };
 template <class IO>
 void fields(IO& io, ClassifyEntry& c) {
@@ -99,6 +84,11 @@ void fields(IO& io, ClassifyEntry& c) {
            "is for by: cor-pbcp, not cor-abp");
   io.check(c.by != "cor-pbcp" || !c.abp_min.has_value(), "abp_min",
            "is for by: cor-abp, not cor-pbcp");
+  constexpr const char* kTolerance =
+      "is a tolerance of by: cor-pbcp or cor-abp, not of by: verdict (the runs' own verdicts)";
+  io.check(c.by != "verdict" || !c.cor_max.has_value(), "cor_max", kTolerance);
+  io.check(c.by != "verdict" || !c.pbcp_min.has_value(), "pbcp_min", kTolerance);
+  io.check(c.by != "verdict" || !c.abp_min.has_value(), "abp_min", kTolerance);
 }
 
 struct SizeEntry {
@@ -119,7 +109,7 @@ struct FitEntry {
 template <class IO>
 void fields(IO& io, FitEntry& f) {
   io.quantity("ridge", f.ridge, units::kDimensionless, kOptional, case_file::kNonNegative);
-  io.scalar("degree", f.degree, Count{}, kOptional);
+  io.scalar("degree", f.degree, kCount, kOptional);
   io.check(f.degree <= 4, "degree", "must be at most 4");
 }
 
@@ -128,6 +118,7 @@ struct FileEntry {
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   double end_time = 80e-9;
   std::optional<double> floor;
+  case_file::ImpactMetrics metrics;
   std::vector<SizeEntry> sizes;
   ParametersEntry parameters;
   ClassifyEntry classify;
@@ -141,6 +132,7 @@ void fields(IO& io, FileEntry& f) {
   io.scalar("geometry", f.geometry, case_file::kGeometryNames, kOptional);
   io.quantity("end_time", f.end_time, units::kTime, kOptional, case_file::kPositive);
   io.quantity("floor", f.floor, units::kDimensionless, kOptional, case_file::kFraction);
+  io.section("metrics", f.metrics, kOptional);
   io.list("sizes", f.sizes, kRequired);
   io.section("parameters", f.parameters, kRequired);
   io.section("classify", f.classify, kOptional);
@@ -148,9 +140,10 @@ void fields(IO& io, FileEntry& f) {
 
 studies::Classification classification(const ClassifyEntry& c) {
   studies::Classification rule;
-  rule.by = c.by == "cor-abp" ? studies::Classification::By::CorAbp
-                              : studies::Classification::By::CorPbcp;
-  rule.cor_max = c.cor_max;
+  rule.by = c.by == "cor-abp"    ? studies::Classification::By::CorAbp
+            : c.by == "cor-pbcp" ? studies::Classification::By::CorPbcp
+                                 : studies::Classification::By::Verdict;
+  if (c.cor_max) rule.cor_max = *c.cor_max;
   if (c.pbcp_min) rule.pbcp_min = *c.pbcp_min;
   if (c.abp_min) rule.abp_min = *c.abp_min;
   return rule;
@@ -212,6 +205,7 @@ CalibrationFile read_calibration_file(const std::string& path) {
   c.geometry = f.geometry;
   c.end_time = f.end_time;
   c.floor = f.floor;
+  c.metrics = f.metrics;
   c.parameters_where = doc.where(parameters_path);
   c.material_where = doc.where(std::array<std::string, 1>{"material"});
 
@@ -340,7 +334,9 @@ case_file::Case calibration_case(const CalibrationFile& file, const studies::Cal
     else
       o.origin = file.file_where;
   }
-  return case_file::load_case_text(file.path, g.yaml, g.origins);
+  case_file::Case c = case_file::load_case_text(file.path, g.yaml, g.origins);
+  c.metrics = file.metrics;  // checked by the case schema when the calibration file was read
+  return c;
 }
 
 }  // namespace coldspray::cli

@@ -1,9 +1,11 @@
 // `coldspray impact`: one particle on a substrate from a few options. Builds the thesis'
 // particle-on-cylinder case (cli/impact_case.hpp), validates it like a case file, runs it and
-// prints the verdict of the impact metrics (thesis §5.2.2); or writes the case out to be edited.
+// prints the verdict on the particle's last window of motion (docs/bonding.md); or writes the case
+// out to be edited.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -65,26 +67,32 @@ std::string speed_text(double v) {
   return std::isnan(v) ? std::string("undefined") : fmt::format("{:.3g} m/s", v);
 }
 
-// The particle's measures and why it is or is not bonded (thesis §5.2.2: PBCP at least
-// metrics.bonded_pbcp and |v_rest| at most metrics.bonded_rest_speed).
+// The particle's verdict (docs/bonding.md, "The verdict") with the numbers it rests on, and its
+// impact measures.
 void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream& out) {
   auto body = [&s](const char* name) {
     return std::find_if(s.bodies.begin(), s.bodies.end(),
                         [name](const auto& b) { return b.name == name; });
   };
   const auto particle = body("particle"), substrate = body("substrate");
-  if (particle == s.bodies.end()) return;  // renamed by --set: no verdict to give
+  if (particle == s.bodies.end() || !particle->verdict) return;  // renamed or stopped by --set
+  const metrics::Verdict& v = *particle->verdict;
+  std::string outcome(metrics::outcome_name(v.outcome));
+  std::transform(outcome.begin(), outcome.end(), outcome.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
+  if (s.extensions > 0)
+    outcome += fmt::format(" after {} extension{} to {:.4g} ns", s.extensions,
+                           s.extensions == 1 ? "" : "s", s.time * 1e9);
+  std::string why =
+      fmt::format("mean separation speed {} over the last {:.3g} ns, margin {}",
+                  speed_text(v.separation_speed), v.window * 1e9, speed_text(v.margin));
+  if (v.outcome == metrics::Outcome::Undecided)
+    why += fmt::format(", its halves {} apart", speed_text(std::abs(v.settling)));
+  why += fmt::format("; bonded area {:.3g} um^2", v.bonded_area * 1e12);
+  if (c.bonding.model == case_file::BondingModel::None)
+    why = "bonding model none: nothing bonds; " + why;
+  out << fmt::format("verdict: {} ({})\n", outcome, why);
   const metrics::ImpactMeasures& m = particle->impact;
-  const double limit_pbcp = c.metrics.bonded_pbcp, limit_rest = c.metrics.bonded_rest_speed;
-  std::string why = fmt::format("pbcp {:.3g} % {} {:.3g} %, ", m.pbcp,
-                                m.pbcp >= limit_pbcp ? ">=" : "<", limit_pbcp);
-  if (std::isnan(m.v_rest))
-    why += fmt::format("no point at or below {:.3g} m/s for v_rest", c.metrics.rest_speed_limit);
-  else
-    why += fmt::format("|v_rest| {:.3g} m/s {} {:.3g} m/s", std::abs(m.v_rest),
-                       std::abs(m.v_rest) <= limit_rest ? "<=" : ">", limit_rest);
-  if (c.bonding.model == case_file::BondingModel::None) why = "bonding model none: nothing bonds";
-  out << fmt::format("verdict: {} ({})\n", m.bonded ? "BONDED" : "NOT BONDED", why);
   out << fmt::format(
       "  cor {:.3g}, v_rest {}, pbcp {:.3g} %, jetted {:.3g} % of the particle's mass", m.cor,
       speed_text(m.v_rest), m.pbcp, 100.0 * m.jetted_fraction);

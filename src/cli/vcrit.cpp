@@ -128,17 +128,21 @@ void add_vcrit(CLI::App& app) {
     studies::write_vcrit_csv(o.out_dir / "vcrit.csv", rows);
     studies::write_vcrit_runs_csv(o.out_dir, o.diameters);
     std::cout << fmt::format(
-        "vcrit of {} (bisection over {:.6g}-{:.6g} m/s to {:.3g} m/s; bonded: system.bonded of "
-        "each impact's summary):\n",
+        "vcrit of {} (bisection over {:.6g}-{:.6g} m/s to {:.3g} m/s; bonded: the verdict of each "
+        "impact's summary, undecided counted as not bonded):\n",
         opt->impact.material, o.vmin, o.vmax, o.tol);
-    std::cout << "  d (um)  vcrit (m/s)  bracket (m/s)    pbcp (%)  v_rest (m/s)  runs  status\n";
+    std::cout << "  d (um)  vcrit (m/s)  bracket (m/s)  margin at vcrit, below (m/s)  runs  "
+                 "undecided  status\n";
     for (const auto& r : rows)
       std::cout << fmt::format(
-          "  {:<6.4g}  {:>11}  {:>13}  {:>10}  {:>12}  {:>4}  {}\n", r.diameter * 1e6,
+          "  {:<6.4g}  {:>11}  {:>13}  {:>28}  {:>4}  {:>9}  {}\n", r.diameter * 1e6,
           number_text(r.search.threshold, "{:.5g}"),
           r.search.found() ? fmt::format("{:.5g}-{:.5g}", r.search.lower, r.search.upper)
                            : std::string("-"),
-          number_text(r.pbcp, "{:.3g}"), number_text(r.v_rest, "{:.3g}"), r.runs_used, r.status);
+          r.search.found() ? fmt::format("{}, {} ({})", number_text(r.margin, "{:+.3g}"),
+                                         number_text(r.lower_margin, "{:+.3g}"), r.lower_outcome)
+                           : std::string("-"),
+          r.runs_used, r.undecided, r.status);
     if (const auto fit = studies::fit_vcrit(rows)) {
       studies::write_vcrit_fit(o.out_dir / "vcrit_fit.json", *fit);
       std::cout << fmt::format(

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "metrics/impact_metrics.hpp"
+#include "metrics/verdict.hpp"
 #include "mpm/state.hpp"
 
 namespace coldspray::metrics {
@@ -23,6 +25,9 @@ struct BodyMetrics {
   std::array<double, 3> contact_force{};  // from all other bodies over the last step, N
   ImpactMeasures impact;
   mpm::Departed departed;  // the points that have left the grid (the rest are of those on it)
+  // For a body that moved in z at t = 0, at the end of a run: the verdict on its last window
+  // (run/verdict_series.hpp); body_metrics leaves it empty.
+  std::optional<Verdict> verdict;
 };
 
 // In index order: independent of the thread count.

@@ -31,12 +31,33 @@ double whole_body_factor(const mpm::State& s, const mpm::BodyRange& r) {
   return factor;
 }
 
+double speed(const mpm::Points& P, std::size_t p) {
+  const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
 }  // namespace
+
+RestAndBond rest_and_bond(const mpm::State& s, std::size_t body) {
+  const mpm::Points& P = s.points;
+  const mpm::BodyRange& r = s.bodies[body];
+  RestAndBond out;
+  for (std::size_t p = r.begin; p < r.end; ++p) {
+    out.mass += P.mass[p];
+    out.momentum_z += P.mass[p] * P.velocity[2][p];
+    if (speed(P, p) <= s.impact_metrics.rest_speed_limit) {
+      out.rest_mass += P.mass[p];
+      out.rest_momentum_z += P.mass[p] * P.velocity[2][p];
+    }
+    if (P.bonded_to[p] != 0) out.bonded_area += point_area(s, p);
+  }
+  out.bonded_area *= whole_body_factor(s, r);
+  return out;
+}
 
 ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
   const mpm::Points& P = s.points;
   const mpm::BodyRange& r = s.bodies[body];
-  const case_file::ImpactMetrics& limits = s.impact_metrics;
   ImpactMeasures m;
   m.moving = r.initial_velocity[2] != 0.0;
 
@@ -57,20 +78,13 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
   m.cor = m.moving ? -(momentum_z / mass) / r.initial_velocity[2] : kNaN;
   m.plastic_energy_density = plastic / volume0;
 
-  double rest_mass = 0.0, rest_momentum = 0.0, jetted = 0.0, touched = 0.0, bonded = 0.0;
-  double bond_sum = 0.0, radius = 0.0;
+  double jetted = 0.0, touched = 0.0, bonded = 0.0, bond_sum = 0.0, radius = 0.0;
   std::size_t touched_points = 0;
   for (std::size_t p = r.begin; p < r.end; ++p) {
-    const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
-    const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     const double dx = P.position[0][p] - centroid[0], dy = P.position[1][p] - centroid[1];
     const double radial = std::hypot(dx, dy);
-    const bool outward = radial > 0.0 && v[0] * dx + v[1] * dy > 0.0;
-    if (speed <= limits.rest_speed_limit) {
-      rest_mass += P.mass[p];
-      rest_momentum += P.mass[p] * v[2];
-    }
-    if (speed > limits.rest_speed_limit && outward)
+    const bool outward = radial > 0.0 && P.velocity[0][p] * dx + P.velocity[1][p] * dy > 0.0;
+    if (speed(P, p) > s.impact_metrics.rest_speed_limit && outward)
       jetted += P.mass[p];
     else
       radius = std::max(radius, radial);
@@ -82,17 +96,15 @@ ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
     m.contact_area += point_area(s, p);
     if (P.bond[p] > 0.0) touched += P.mass[p];
     if (P.bond[p] >= 1.0) bonded += P.mass[p];
-    if (P.bonded_to[p] != 0) m.bonded_area += point_area(s, p);
   }
-  m.v_rest = rest_mass > 0.0 ? rest_momentum / rest_mass : kNaN;
+  const RestAndBond rest = rest_and_bond(s, body);
+  m.v_rest = rest.rest_mass > 0.0 ? rest.rest_momentum_z / rest.rest_mass : kNaN;
+  m.bonded_area = rest.bonded_area;
   m.contact_area *= whole_body_factor(s, r);
-  m.bonded_area *= whole_body_factor(s, r);
   m.jetted_fraction = (jetted + r.departed.mass) / (mass + r.departed.mass);
   m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;
   m.pbcp = touched > 0.0 ? 100.0 * bonded / touched : 0.0;
-  m.bonded =
-      m.moving && m.pbcp >= limits.bonded_pbcp && std::abs(m.v_rest) <= limits.bonded_rest_speed;
   return m;
 }
 

@@ -1,5 +1,6 @@
-// The impact measures of a body (thesis §5.2.2 and Chapter 4) and the bonded verdict, over its
-// points on the grid; the jetted fraction also counts those that have left it.
+// The impact measures of a body (thesis §5.2.2 and Chapter 4), over its points on the grid; the
+// jetted fraction also counts those that have left it. The bonded verdict, which reads them over
+// the run's last window, is metrics/verdict.hpp's.
 #pragma once
 
 #include <cstddef>
@@ -30,9 +31,21 @@ struct ImpactMeasures {
   double contact_area = 0.0;  // surface area of the points that touched another body, m^2
   double bonded_area = 0.0;   // of those that keep a bond (mpm::Points::bonded_to), m^2
   bool moving = false;        // started with a z velocity: cor and the verdict apply
-  bool bonded = false;        // pbcp >= metrics.bonded_pbcp and |v_rest| <= bonded_rest_speed
 };
 
 ImpactMeasures impact_measures(const mpm::State& s, std::size_t body);
+
+// What the verdict follows of a body, from one pass over its points, as ImpactMeasures counts
+// it: the mass and z momentum of all its points and of those at rest (v_rest = rest_momentum_z /
+// rest_mass), and its bonded area.
+struct RestAndBond {
+  double mass = 0.0;             // kg
+  double momentum_z = 0.0;       // kg m/s
+  double rest_mass = 0.0;        // of the points no faster than metrics.rest_speed_limit, kg
+  double rest_momentum_z = 0.0;  // kg m/s
+  double bonded_area = 0.0;      // m^2
+};
+
+RestAndBond rest_and_bond(const mpm::State& s, std::size_t body);
 
 }  // namespace coldspray::metrics

@@ -66,6 +66,8 @@ class Trunk {
           handed_on += branch_off(k, shared);
       if (!shadows_.active()) return;
       if (!step(mpm::step_from_contact)) return;
+      sample_members();
+      if (rule_.finished(state_)) extend_undecided(seconds_since(t0) - handed_on);
       record_step(rule_.finished(state_));
       const double wall = seconds_since(t0) - handed_on;
       for (std::size_t k = 0; k < shadows_.size(); ++k) {
@@ -106,22 +108,61 @@ class Trunk {
     return false;
   }
 
-  // The rows and snapshots due, each member's with its own D_bond. A member whose recording
-  // fails ends as it would alone (run_to_end): a RunFault with its last snapshot and summary.
-  void record_step(bool last) {
+  // The verdict samples due, each member's with its own D_bond (its bonded area).
+  void sample_members() {
     for (std::size_t k = shadows_.size(); k-- > 0;) {
       Recorder& rec = *recorders_[shadows_.id(k)];
-      if (!rec.due(state_, last)) continue;
-      try {
-        shadows_.write_bond(k, state_.points);
-        rec.after_step(state_, last);
-      } catch (const RunFault& fault) {
-        end_member(k, &fault);
-      } catch (...) {
-        fail_member(k, std::current_exception());
-      }
+      if (!rec.sample_due(state_, rule_)) continue;
+      shadows_.write_bond(k, state_.points);
+      rec.sample(state_);
     }
     shadows_.clear_bond(state_.points);
+  }
+
+  // At the end time, as each member would alone (run_to_end): if a member's verdict is undecided
+  // and the rule has an extension left, the undecided members go on one more window and the
+  // others end here, with this step (`wall` seconds of it so far) counted as shared; otherwise
+  // all end with the loop.
+  void extend_undecided(double wall) {
+    bool any = false;
+    for (std::size_t k = 0; k < shadows_.size(); ++k)
+      any = any || recorders_[shadows_.id(k)]->undecided();
+    if (!any || !rule_.extend()) return;
+    for (std::size_t k = shadows_.size(); k-- > 0;) {
+      Recorder& rec = *recorders_[shadows_.id(k)];
+      if (rec.undecided()) {
+        rec.add_extension();
+        continue;
+      }
+      rec.add_wall(wall);
+      rec.add_shared_step();
+      if (record(k, /*last=*/true)) end_member(k, nullptr);
+    }
+    shadows_.clear_bond(state_.points);
+  }
+
+  // The rows and snapshots due, each member's with its own D_bond.
+  void record_step(bool last) {
+    for (std::size_t k = shadows_.size(); k-- > 0;) record(k, last);
+    shadows_.clear_bond(state_.points);
+  }
+
+  // Member k's rows and snapshot due. A member whose recording fails ends as it would alone
+  // (run_to_end): a RunFault with its last snapshot and summary. Returns whether it is still on
+  // the trunk.
+  bool record(std::size_t k, bool last) {
+    Recorder& rec = *recorders_[shadows_.id(k)];
+    if (!rec.due(state_, last)) return true;
+    try {
+      shadows_.write_bond(k, state_.points);
+      rec.after_step(state_, last);
+      return true;
+    } catch (const RunFault& fault) {
+      end_member(k, &fault);
+    } catch (...) {
+      fail_member(k, std::current_exception());
+    }
+    return false;
   }
 
   // Shadow k's member leaves, halfway through the step (`shared` seconds into it): a copy of the
@@ -188,7 +229,7 @@ class Trunk {
   const FamilyHooks& hooks_;
   mpm::State state_;
   mpm::BondShadows& shadows_;
-  const StepRule rule_;
+  StepRule rule_;
   std::vector<std::unique_ptr<Recorder>> recorders_;
 };
 

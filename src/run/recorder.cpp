@@ -31,7 +31,8 @@ Recorder::Recorder(const case_file::Case& c, const mpm::State& s, std::filesyste
       probes_(c.output.probes, s, out_ / "probes.csv"),
       pvd_(out_ / "snapshots.pvd"),
       history_due_(c.output.history_interval),
-      snapshot_due_(c.output.snapshot_interval) {
+      snapshot_due_(c.output.snapshot_interval),
+      verdict_(c.metrics, s) {
   summary_.threads = omp_get_max_threads();
   summary_.particles = s.points.size();
   summary_.total_energy_initial = metrics::energy_budget(s).total();
@@ -39,6 +40,7 @@ Recorder::Recorder(const case_file::Case& c, const mpm::State& s, std::filesyste
 
 void Recorder::start(const mpm::State& s) {
   after_step(s, /*last=*/true);  // the rows at t = 0, always
+  verdict_.sample(s);            // so that a run shorter than the window is read from its start
   snapshot_due_.done(0.0);
   snapshot(s);
 }
@@ -93,6 +95,8 @@ Summary Recorder::finish(const mpm::State& s, const std::string& status) {
                                   : 0.0;
   summary_.energy = metrics::energy_budget(s);
   summary_.bodies = metrics::body_metrics(s);
+  const std::vector<std::optional<metrics::Verdict>> verdicts = verdict_.verdicts();
+  for (std::size_t b = 0; b < summary_.bodies.size(); ++b) summary_.bodies[b].verdict = verdicts[b];
   write_summary_json(summary_, out_ / "summary.json");
   return summary_;
 }

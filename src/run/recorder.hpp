@@ -1,6 +1,7 @@
 // A run's outputs in its folder, written as it goes: case.resolved.yaml, history.csv,
-// contact.csv, probes.csv, snapshots/*.vtu with snapshots.pvd, and at the end summary.json.
-// run_case keeps one; a bond family keeps one per member (run/bond_family.hpp).
+// contact.csv, probes.csv, snapshots/*.vtu with snapshots.pvd, and at the end summary.json with
+// the verdict on the series it sampled (run/verdict_series.hpp). run_case keeps one; a bond
+// family keeps one per member (run/bond_family.hpp).
 #pragma once
 
 #include <filesystem>
@@ -13,7 +14,9 @@
 #include "run/history.hpp"
 #include "run/probes.hpp"
 #include "run/schedule.hpp"
+#include "run/step_rule.hpp"
 #include "run/summary.hpp"
+#include "run/verdict_series.hpp"
 
 namespace coldspray::run {
 
@@ -30,6 +33,14 @@ class Recorder {
   // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
   // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
   void after_step(const mpm::State& s, bool last);
+  // The verdict's series: whether a sample falls due after the step that ended at s.time under
+  // `rule`'s end, and taking it.
+  bool sample_due(const mpm::State& s, const StepRule& rule) const { return verdict_.due(s, rule); }
+  void sample(const mpm::State& s) { verdict_.sample(s); }
+  // Whether the verdict, were the run to end now, is undecided; and that the run was extended by
+  // a window because it was.
+  bool undecided() const { return verdict_.undecided(); }
+  void add_extension() { ++summary_.extensions; }
   // Wall time spent on the run, and how many of its steps it shared with other runs.
   void add_wall(double seconds) { summary_.wall_seconds += seconds; }
   void add_shared_step() { ++summary_.shared_steps; }
@@ -53,6 +64,7 @@ class Recorder {
   ProbeWriter probes_;
   io::PvdCollection pvd_;
   Schedule history_due_, snapshot_due_;
+  VerdictSeries verdict_;
   Summary summary_;
 };
 

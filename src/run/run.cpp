@@ -18,14 +18,13 @@ using Clock = std::chrono::steady_clock;
 
 class Progress {
  public:
-  Progress(bool enabled, double end_time)
-      : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0), end_(end_time) {}
-  void report(const mpm::State& s, double wall, bool last) {
+  explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
+  void report(const mpm::State& s, double end, double wall, bool last) {
     if (!enabled_) return;
     const double interval = tty_ ? 0.5 : 10.0;
     if (!last && wall - last_wall_ < interval) return;
     last_wall_ = wall;
-    const double fraction = s.time / end_;
+    const double fraction = s.time / end;
     const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
     std::cerr << fmt::format("{}t = {:.3f} ns ({:.0f}%)  step {}  dt {:.3g} s  ETA {:.0f} s{}",
                              tty_ ? "\r" : "", s.time * 1e9, 100.0 * fraction, s.step, s.dt, eta,
@@ -34,7 +33,7 @@ class Progress {
 
  private:
   bool enabled_, tty_;
-  double end_, last_wall_ = -1e30;
+  double last_wall_ = -1e30;
 };
 
 }  // namespace
@@ -48,9 +47,9 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
   return run_to_end(s, StepRule(c, s), rec, options.progress);
 }
 
-Summary run_to_end(mpm::State& s, const StepRule& rule, Recorder& rec, bool progress_line,
+Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress_line,
                    ResumeAt resume) {
-  Progress progress(progress_line, rule.end);
+  Progress progress(progress_line);
   const auto start = Clock::now();
   auto wall = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   double recorded = 0.0;  // of wall(), already added to rec
@@ -67,10 +66,12 @@ Summary run_to_end(mpm::State& s, const StepRule& rule, Recorder& rec, bool prog
       }
       resume = ResumeAt::StepStart;
       mpm::step_from_contact(s);
+      if (rec.sample_due(s, rule)) rec.sample(s);
+      if (rule.finished(s) && rec.undecided() && rule.extend()) rec.add_extension();
       const bool last = rule.finished(s);
       rec.after_step(s, last);
       account();
-      progress.report(s, wall(), last);
+      progress.report(s, rule.end, wall(), last);
     }
   } catch (const RunFault& fault) {
     account();

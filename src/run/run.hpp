@@ -26,10 +26,11 @@ Summary run_case(const case_file::Case& c, const RunOptions& options);
 // (mpm::step_from_contact next), as a bond family's branch does.
 enum class ResumeAt { StepStart, Contact };
 
-// run_case's loop: steps `s` to the rule's end time, recording each step in `rec`, then writes
-// the last snapshot and the summary. On a fault, the same with the fault as status, then throws
-// RunFault naming the folder.
-Summary run_to_end(mpm::State& s, const StepRule& rule, Recorder& rec, bool progress,
+// run_case's loop: steps `s` to the rule's end time, recording each step in `rec`, extending the
+// run by a verdict window while the verdict is undecided and the rule allows (docs/bonding.md),
+// then writes the last snapshot and the summary. On a fault, the same with the fault as status,
+// then throws RunFault naming the folder.
+Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress,
                    ResumeAt resume = ResumeAt::StepStart);
 
 }  // namespace coldspray::run

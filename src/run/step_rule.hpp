@@ -1,4 +1,6 @@
-// How a run chooses its time step and when it ends: solver.cfl, solver.dt_scale, solver.end_time.
+// How a run chooses its time step and when it ends: solver.cfl, solver.dt_scale, solver.end_time,
+// and the extensions of a run whose verdict is undecided (metrics.verdict_window,
+// metrics.verdict_extensions; docs/bonding.md).
 #pragma once
 
 #include <algorithm>
@@ -16,15 +18,25 @@ struct StepRule {
   StepRule(const case_file::Case& c, const mpm::State& s)
       : end(c.solver.end_time),
         cfl(c.solver.cfl),
-        fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * mpm::stable_time_step(s, 1.0) : 0.0) {}
+        fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * mpm::stable_time_step(s, 1.0) : 0.0),
+        window(c.metrics.verdict_window),
+        extensions_left(c.metrics.verdict_extensions) {}
 
   // The next step's dt, the last one shortened to land on the end time.
   double next_dt(const mpm::State& s) const {
     return std::min(fixed_dt > 0.0 ? fixed_dt : mpm::stable_time_step(s, cfl), end - s.time);
   }
   bool finished(const mpm::State& s) const { return s.time >= end * (1.0 - 1e-12); }
+  // Moves the end one verdict window later, if an extension is left; returns whether it did.
+  bool extend() {
+    if (extensions_left <= 0) return false;
+    --extensions_left;
+    end += window;
+    return true;
+  }
 
-  double end, cfl, fixed_dt;
+  double end, cfl, fixed_dt, window;
+  int extensions_left;
 };
 
 }  // namespace coldspray::run

@@ -34,11 +34,9 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
   auto number = [](double x) {
     return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
   };
-  int moving = 0, bonded = 0;
+  int moving = 0, bonded = 0, undecided = 0;
   for (const auto& b : s.bodies) {
     const metrics::ImpactMeasures& m = b.impact;
-    moving += m.moving;
-    bonded += m.bonded;
     bodies[b.name] = {{"mass", b.mass},
                       {"velocity", b.velocity},
                       {"centroid", b.centroid},
@@ -51,7 +49,6 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                       {"v_rest", number(m.v_rest)},
                       {"abp", m.abp},
                       {"pbcp", m.pbcp},
-                      {"bonded", m.bonded},
                       {"plastic_energy_density", m.plastic_energy_density},
                       {"jetted_fraction", m.jetted_fraction},
                       {"crater_depth", m.crater_depth},
@@ -65,12 +62,30 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                         {"kinetic_energy", b.departed.kinetic},
                         {"internal_energy", b.departed.internal},
                         {"plastic_work", b.departed.plastic_work}}}};
+    if (!b.verdict) continue;
+    const metrics::Verdict& v = *b.verdict;
+    ++moving;
+    bonded += v.outcome == metrics::Outcome::Bonded;
+    undecided += v.outcome == metrics::Outcome::Undecided;
+    bodies[b.name]["verdict"] = {{"outcome", metrics::outcome_name(v.outcome)},
+                                 {"separation_speed", number(v.separation_speed)},
+                                 {"margin", number(v.margin)},
+                                 {"settling", number(v.settling)},
+                                 {"window", v.window}};
   }
   j["bodies"] = bodies;
-  // The verdict over the bodies that moved in z at t = 0 (the particles).
-  j["system"] = {{"bonded", moving > 0 && bonded == moving},
+  // The verdict over the bodies that moved in z at t = 0 (the particles): bonded when every one
+  // is, rebounded when one is, else undecided.
+  const char* outcome = moving == 0                    ? nullptr
+                        : bonded == moving             ? "bonded"
+                        : bonded + undecided == moving ? "undecided"
+                                                       : "rebounded";
+  j["system"] = {{"outcome", outcome ? nlohmann::ordered_json(outcome) : nlohmann::ordered_json()},
+                 {"bonded", moving > 0 && bonded == moving},
                  {"moving_bodies", moving},
-                 {"bonded_bodies", bonded}};
+                 {"bonded_bodies", bonded},
+                 {"undecided_bodies", undecided},
+                 {"extensions", s.extensions}};
   io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 

@@ -17,6 +17,7 @@ struct Summary {
   double time = 0.0;          // simulated, s
   double wall_seconds = 0.0;  // of a bond-family member, with the shared steps in full
   long shared_steps = 0;      // steps shared with other runs (run/bond_family.hpp)
+  int extensions = 0;         // verdict windows the run was extended by while undecided
   int threads = 1;
   std::size_t particles = 0;
   double particle_steps_per_second = 0.0;

@@ -20,18 +20,26 @@ namespace coldspray::studies {
 
 namespace fs = std::filesystem;
 
-int classify(const Classification& rule, double cor, double abp, double pbcp) {
+int classify(const Classification& rule, const RunMeasures& m) {
+  if (rule.by == Classification::By::Verdict)
+    return m.outcome == "bonded" ? 1 : m.outcome == "rebounded" ? 0 : kLeftOut;
   // Eqs 4.8-4.9: y = 1 for CoR <= tol & ABP >= tol; §5.1.2 puts PBCP in ABP's place. A NaN
   // fails every comparison, so an undefined measure classifies as not bonded.
   const bool bond =
-      rule.by == Classification::By::CorPbcp ? pbcp >= rule.pbcp_min : abp >= rule.abp_min;
-  return cor <= rule.cor_max && bond ? 1 : 0;
+      rule.by == Classification::By::CorPbcp ? m.pbcp >= rule.pbcp_min : m.abp >= rule.abp_min;
+  return m.cor <= rule.cor_max && bond ? 1 : 0;
 }
 
 std::string describe(const Classification& rule) {
-  return rule.by == Classification::By::CorPbcp
-             ? fmt::format("cor <= {:.6g} and pbcp >= {:.6g} %", rule.cor_max, rule.pbcp_min)
-             : fmt::format("cor <= {:.6g} and abp >= {:.6g}", rule.cor_max, rule.abp_min);
+  switch (rule.by) {
+    case Classification::By::CorPbcp:
+      return fmt::format("cor <= {:.6g} and pbcp >= {:.6g} %", rule.cor_max, rule.pbcp_min);
+    case Classification::By::CorAbp:
+      return fmt::format("cor <= {:.6g} and abp >= {:.6g}", rule.cor_max, rule.abp_min);
+    case Classification::By::Verdict:
+      break;
+  }
+  return "by the runs' verdicts";
 }
 
 std::vector<double> parameter_values(const ParameterAxis& axis) {
@@ -163,7 +171,8 @@ namespace {
 
 struct Measured {
   std::string status = "pending";
-  double cor = NAN, abp = NAN, pbcp = NAN, v_rest = NAN;
+  RunMeasures run;
+  double v_rest = NAN, separation_speed = NAN, margin = NAN;
   bool usable = false;  // ok, with the particle's measures
 };
 
@@ -178,13 +187,17 @@ Measured measure(const fs::path& folder) {
   m.status = s.value("status", std::string("no status"));
   if (m.status != "ok" || !s.contains("bodies") || !s["bodies"].contains("particle")) return m;
   const nlohmann::json& p = s["bodies"]["particle"];
-  auto get = [&p](const char* key) {
-    return p.contains(key) && p[key].is_number() ? p[key].get<double>() : NAN;
+  const nlohmann::json verdict = p.value("verdict", nlohmann::json::object());
+  auto get = [](const nlohmann::json& j, const char* key) {
+    return j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
   };
-  m.cor = get("cor");
-  m.abp = get("abp");
-  m.pbcp = get("pbcp");
-  m.v_rest = get("v_rest");
+  m.run.outcome = verdict.value("outcome", std::string());
+  m.run.cor = get(p, "cor");
+  m.run.abp = get(p, "abp");
+  m.run.pbcp = get(p, "pbcp");
+  m.v_rest = get(p, "v_rest");
+  m.separation_speed = get(verdict, "separation_speed");
+  m.margin = get(verdict, "margin");
   m.usable = true;
   return m;
 }
@@ -192,13 +205,15 @@ Measured measure(const fs::path& folder) {
 std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
 
 nlohmann::json classification_json(const Classification& c) {
-  nlohmann::json j = {{"by", c.by == Classification::By::CorPbcp ? "cor-pbcp" : "cor-abp"},
-                      {"cor_max", c.cor_max}};
-  if (c.by == Classification::By::CorPbcp)
-    j["pbcp_min"] = c.pbcp_min;
-  else
-    j["abp_min"] = c.abp_min;
-  return j;
+  switch (c.by) {
+    case Classification::By::CorPbcp:
+      return {{"by", "cor-pbcp"}, {"cor_max", c.cor_max}, {"pbcp_min", c.pbcp_min}};
+    case Classification::By::CorAbp:
+      return {{"by", "cor-abp"}, {"cor_max", c.cor_max}, {"abp_min", c.abp_min}};
+    case Classification::By::Verdict:
+      break;
+  }
+  return {{"by", "verdict"}};
 }
 
 nlohmann::json fit_json(const LogisticFit& f) {
@@ -234,25 +249,26 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
 
   io::write_atomically(out_dir / "runs.csv", [&](std::ostream& out) {
     out << "grid,size,diameter_um,velocity_ms," << plan.x1.key << "," << plan.x2.key
-        << ",status,cor,abp,pbcp,v_rest,y\n";
+        << ",status,outcome,separation_speed,margin,cor,abp,pbcp,v_rest,y\n";
     for (const CalibrationRun& run : runs) {
       const CalibrationSize& size = plan.sizes[run.size];
       const Measured m = measure(run.folder);
       SizeResult& r = results[run.grid].sizes[run.size];
       ++r.runs;
-      int y = -1;
-      if (m.usable) {
-        y = classify(size.classify, m.cor, m.abp, m.pbcp);
+      const int y = m.usable ? classify(size.classify, m.run) : kLeftOut;
+      if (y != kLeftOut) {
         ++(y == 1 ? r.bonded : r.not_bonded);
         samples[run.grid][run.size].push_back({run.x1, run.x2, y});
       } else {
-        ++r.failed;
+        ++(m.usable && m.run.outcome == "undecided" ? r.undecided : r.failed);
       }
       out << csv_field(plan.grids[run.grid]) << "," << size.label() << ","
           << csv_number(size.diameter * 1e6) << "," << csv_number(size.velocity) << ","
           << csv_number(run.x1) << "," << csv_number(run.x2) << "," << csv_field(m.status) << ","
-          << csv_number(m.cor) << "," << csv_number(m.abp) << "," << csv_number(m.pbcp) << ","
-          << csv_number(m.v_rest) << "," << (y < 0 ? std::string("") : std::to_string(y)) << "\n";
+          << csv_field(m.run.outcome) << "," << csv_number(m.separation_speed) << ","
+          << csv_number(m.margin) << "," << csv_number(m.run.cor) << "," << csv_number(m.run.abp)
+          << "," << csv_number(m.run.pbcp) << "," << csv_number(m.v_rest) << ","
+          << (y == kLeftOut ? std::string("") : std::to_string(y)) << "\n";
     }
   });
 
@@ -264,10 +280,14 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
     for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
       SizeResult& r = gr.sizes[s];
       if (r.bonded == 0 || r.not_bonded == 0) {
+        const bool by_verdict = plan.sizes[s].classify.by == Classification::By::Verdict;
         r.diagnosis = fmt::format(
-            "one class only ({} bonded, {} not bonded{}): no boundary; widen the parameter "
-            "rectangle or adjust the tolerances ({})",
-            r.bonded, r.not_bonded, r.failed ? fmt::format(", {} failed", r.failed) : "",
+            "one class only ({} bonded, {} not bonded{}{}): no boundary; widen the parameter "
+            "rectangle or {} ({})",
+            r.bonded, r.not_bonded, r.undecided ? fmt::format(", {} undecided", r.undecided) : "",
+            r.failed ? fmt::format(", {} failed", r.failed) : "",
+            by_verdict ? "let undecided runs go on longer (end_time, metrics.verdict_extensions)"
+                       : "adjust the tolerances",
             describe(plan.sizes[s].classify));
         continue;
       }
@@ -342,6 +362,7 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
           {"runs", r.runs},
           {"bonded", r.bonded},
           {"not_bonded", r.not_bonded},
+          {"undecided", r.undecided},
           {"failed", r.failed},
           {"fit", r.fit ? fit_json(*r.fit) : nlohmann::json()},
           {"boundary_csv",

@@ -1,12 +1,14 @@
 // Calibration of a bonding model's two parameters (G_c and Gdot_c of the energy model, eps_c and
 // its rate of the strain model) after mpm-bonding-thesis.md §4.1.2 and §5.1.1-5.1.3: every
-// (size, x1, x2) of a parameter grid is simulated; each run is classified bonded (y = 1) by
-// tolerances on its restitution ratio and PBCP or ABP (eqs 4.8-4.9, §5.1.2); a second-order
-// logistic regression per size (eqs 4.10-4.14) gives the boundary Z = 0 in the (x1, x2) plane;
-// the crossing of two sizes' boundaries is the calibration (Figs 4.4, 5.1-5.3, 5.5). Several
-// grid configurations may be calibrated side by side (discretisation sensitivity, Fig 5.7).
+// (size, x1, x2) of a parameter grid is simulated; each run is classified bonded (y = 1) by its
+// verdict, or by the thesis' tolerances on its restitution ratio and PBCP or ABP (eqs 4.8-4.9,
+// §5.1.2); a second-order logistic regression per size (eqs 4.10-4.14) gives the boundary Z = 0
+// in the (x1, x2) plane; the crossing of two sizes' boundaries is the calibration (Figs 4.4,
+// 5.1-5.3, 5.5). Several grid configurations may be calibrated side by side (discretisation
+// sensitivity, Fig 5.7).
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -19,17 +21,28 @@
 
 namespace coldspray::studies {
 
-// How a run is classified (thesis eqs 4.8-4.9): bonded, y = 1, when its restitution ratio is
-// at most cor_max and its PBCP (§5.1.2, eq 5.1) or its average bond parameter (ABP, eq 4.8) is
-// at least the minimum; 0 otherwise, also when a measure is undefined (NaN).
+// How a run is classified. By default by its verdict (docs/bonding.md, "The verdict"): bonded,
+// y = 1; rebounded, y = 0; undecided, left out of the regression (and counted). Or by the thesis'
+// tolerances (eqs 4.8-4.9, §5.1.2): y = 1 when its restitution ratio is at most cor_max and its
+// PBCP (eq 5.1) or its average bond parameter (ABP, eq 4.8) at least the minimum; 0 otherwise,
+// also when a measure is undefined (NaN).
 struct Classification {
-  enum class By { CorPbcp, CorAbp };
-  By by = By::CorPbcp;
-  double cor_max = 0.003;
-  double pbcp_min = 5.0;  // %, with CorPbcp
-  double abp_min = 0.15;  // with CorAbp
+  enum class By { Verdict, CorPbcp, CorAbp };
+  By by = By::Verdict;
+  double cor_max = 0.003;  // with CorPbcp and CorAbp
+  double pbcp_min = 5.0;   // %, with CorPbcp
+  double abp_min = 0.15;   // with CorAbp
 };
-int classify(const Classification& rule, double cor, double abp, double pbcp);
+
+// What a run's summary says of its particle.
+struct RunMeasures {
+  std::string outcome;  // its verdict: bonded, rebounded, undecided; empty if it has none
+  double cor = NAN, abp = NAN, pbcp = NAN;
+};
+
+// y = 1 or 0, or kLeftOut: by the verdict, for a run undecided or without a verdict.
+inline constexpr int kLeftOut = -1;
+int classify(const Classification& rule, const RunMeasures& m);
 std::string describe(const Classification& rule);  // "cor <= 0.003 and pbcp >= 5 %"
 
 // One parameter's values: `count` from `from` to `to` (both included), equally spaced in x or,
@@ -93,7 +106,9 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
 
 // The analysis of one size on one grid.
 struct SizeResult {
-  std::size_t runs = 0, bonded = 0, not_bonded = 0, failed = 0;  // failed: no usable summary
+  // failed: no usable summary (or, classified by the verdict, a summary without one); undecided:
+  // left out of the fit, classified by the verdict
+  std::size_t runs = 0, bonded = 0, not_bonded = 0, undecided = 0, failed = 0;
   std::optional<LogisticFit> fit;
   std::string diagnosis;  // why there is no fit, else empty
   std::string boundary_file;

@@ -40,6 +40,20 @@ const nlohmann::json& particle(const nlohmann::json& s) {
   return s["bodies"]["particle"];
 }
 
+// The system's verdict in a summary: bonded, rebounded, undecided, or empty when it has none.
+std::string outcome(const nlohmann::json& s) {
+  if (!s.is_object() || !s.contains("system") || !s["system"].contains("outcome")) return "";
+  const nlohmann::json& o = s["system"]["outcome"];
+  return o.is_string() ? o.get<std::string>() : "";
+}
+
+// The particle's verdict's margin, m/s.
+double margin(const nlohmann::json& s) {
+  const nlohmann::json& p = particle(s);
+  return p.is_object() && p.contains("verdict") ? number_or_nan(p["verdict"], "margin")
+                                                : std::nan("");
+}
+
 // The progress line of a search over several diameters: impacts done, the last outcome, and an
 // estimate of the time left from the bisection's run count per diameter.
 class Progress {
@@ -51,13 +65,12 @@ class Progress {
         diameters_(diameters),
         start_(std::chrono::steady_clock::now()) {}
 
-  void impact(double diameter, double speed, bool bonded, bool simulated) {
+  void impact(double diameter, double speed, const std::string& outcome, bool simulated) {
     if (!on_) return;
     const std::lock_guard<std::mutex> lock(mutex_);
     ++impacts_;
     if (simulated) ++simulated_;
-    line(fmt::format("d {} um at {} m/s {}", label(diameter / kUm), label(speed),
-                     bonded ? "bonded" : "not bonded"));
+    line(fmt::format("d {} um at {} m/s {}", label(diameter / kUm), label(speed), outcome));
   }
 
   void diameter_done(int impacts) {
@@ -112,9 +125,10 @@ VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double 
     const std::string status =
         s.is_object() ? s.value("status", std::string("no status")) : "unreadable summary";
     if (status != "ok") throw FailedRun(fmt::format("failed at {} m/s: {}", label(speed), status));
-    const bool stuck = s.contains("system") && s["system"].value("bonded", false);
-    progress.impact(diameter, speed, stuck, simulate);
-    return stuck;
+    const std::string verdict = outcome(s);
+    if (verdict == "undecided") ++row.undecided;
+    progress.impact(diameter, speed, verdict, simulate);
+    return verdict == "bonded";
   };
   try {
     row.search = find_threshold(bonded, o.vmin, o.vmax, o.tol, o.max_runs, nullptr,
@@ -127,8 +141,12 @@ VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double 
   if (row.search.found()) {
     const nlohmann::json s = read_summary(impact_folder(o.out_dir, diameter, row.search.threshold));
     const nlohmann::json& p = particle(s);
+    row.margin = margin(s);
     row.pbcp = number_or_nan(p, "pbcp");
     row.v_rest = number_or_nan(p, "v_rest");
+    const nlohmann::json below = read_summary(impact_folder(o.out_dir, diameter, row.search.lower));
+    row.lower_margin = margin(below);
+    row.lower_outcome = outcome(below);
   }
   return row;
 }
@@ -164,17 +182,21 @@ std::vector<VcritRow> find_critical_velocities(const ImpactCaseMaker& make_case,
 
 void write_vcrit_csv(const fs::path& path, const std::vector<VcritRow>& rows) {
   io::write_atomically(path, [&](std::ostream& out) {
-    out << "diameter_um,vcrit_ms,lower_ms,pbcp,v_rest,runs_used,status\n";
+    out << "diameter_um,vcrit_ms,lower_ms,margin,lower_margin,lower_outcome,pbcp,v_rest,runs_used,"
+           "undecided,status\n";
     for (const VcritRow& r : rows)
       out << csv_number(r.diameter / kUm) << "," << csv_number(r.search.threshold) << ","
-          << csv_number(r.search.lower) << "," << csv_number(r.pbcp) << "," << csv_number(r.v_rest)
-          << "," << r.runs_used << "," << csv_field(r.status) << "\n";
+          << csv_number(r.search.lower) << "," << csv_number(r.margin) << ","
+          << csv_number(r.lower_margin) << "," << csv_field(r.lower_outcome) << ","
+          << csv_number(r.pbcp) << "," << csv_number(r.v_rest) << "," << r.runs_used << ","
+          << r.undecided << "," << csv_field(r.status) << "\n";
   });
 }
 
 void write_vcrit_runs_csv(const fs::path& out_dir, const std::vector<double>& diameters) {
   io::write_atomically(out_dir / "vcrit_runs.csv", [&](std::ostream& out) {
-    out << "diameter_um,velocity_ms,status,bonded,cor,v_rest,abp,pbcp\n";
+    out << "diameter_um,velocity_ms,status,outcome,bonded,separation_speed,margin,extensions,cor,"
+           "v_rest,abp,pbcp\n";
     for (const double d : diameters) {
       const fs::path folder = impact_folder(out_dir, d, 1.0).parent_path();
       std::vector<std::pair<double, fs::path>> runs;
@@ -193,11 +215,17 @@ void write_vcrit_runs_csv(const fs::path& out_dir, const std::vector<double>& di
         if (!case_finished(run)) continue;
         const nlohmann::json s = read_summary(run);
         const nlohmann::json& p = particle(s);
-        const bool bonded =
-            s.is_object() && s.contains("system") && s["system"].value("bonded", false);
+        const nlohmann::json verdict =
+            p.is_object() && p.contains("verdict") ? p["verdict"] : nlohmann::json();
+        const std::string o = outcome(s);
         out << csv_number(d / kUm) << "," << csv_number(speed) << ","
             << csv_field(s.is_object() ? s.value("status", std::string()) : "unreadable") << ","
-            << (bonded ? 1 : 0) << "," << csv_number(number_or_nan(p, "cor")) << ","
+            << csv_field(o) << "," << (o == "bonded" ? 1 : 0) << ","
+            << csv_number(number_or_nan(verdict, "separation_speed")) << ","
+            << csv_number(number_or_nan(verdict, "margin")) << ","
+            << csv_number(s.contains("system") ? number_or_nan(s["system"], "extensions")
+                                               : std::nan(""))
+            << "," << csv_number(number_or_nan(p, "cor")) << ","
             << csv_number(number_or_nan(p, "v_rest")) << "," << csv_number(number_or_nan(p, "abp"))
             << "," << csv_number(number_or_nan(p, "pbcp")) << "\n";
       }

@@ -40,9 +40,15 @@ struct VcritRow {
   double diameter = 0.0;  // m
   ThresholdResult search;
   std::string status;  // found, not bracketed, evaluation limit, non-monotone, or a run's failure
+  // The verdict's margins (docs/bonding.md) of the runs at vcrit and at the highest speed that did
+  // not bond, m/s, and that run's outcome (rebounded, or undecided: counted as not bonded).
+  double margin = std::numeric_limits<double>::quiet_NaN();
+  double lower_margin = std::numeric_limits<double>::quiet_NaN();
+  std::string lower_outcome;
   double pbcp = std::numeric_limits<double>::quiet_NaN();    // %, of the run at vcrit
   double v_rest = std::numeric_limits<double>::quiet_NaN();  // m/s, of the run at vcrit
   int runs_used = 0;                                         // distinct speeds the search used
+  int undecided = 0;  // of those, undecided (counted as not bonded)
   int simulated = 0;  // of those, simulated now (the others were on disk)
 };
 
@@ -51,17 +57,20 @@ std::filesystem::path impact_folder(const std::filesystem::path& out_dir, double
                                     double speed);
 
 // Searches this rank's diameters (find_threshold over [vmin, vmax], predicate "the impact's
-// summary says system.bonded"). A run that fails (fault, input error) stops its diameter's search
+// summary says system.bonded", its verdict; an undecided run counts as not bonded). A run that
+// fails (fault, input error) stops its diameter's search
 // with the failure as status; the others go on. Every case is loaded before anything runs, at
 // vmin and vmax, so that bad input stops the study first (InputError).
 std::vector<VcritRow> find_critical_velocities(const ImpactCaseMaker& make_case,
                                                const VcritOptions& options);
 
-// DIR/vcrit.csv: diameter_um, vcrit_ms, lower_ms, pbcp, v_rest, runs_used, status.
+// DIR/vcrit.csv: diameter_um, vcrit_ms, lower_ms, margin, lower_margin, lower_outcome, pbcp,
+// v_rest, runs_used, undecided, status.
 void write_vcrit_csv(const std::filesystem::path& path, const std::vector<VcritRow>& rows);
 
 // DIR/vcrit_runs.csv: every finished impact folder of the given diameters (diameter_um,
-// velocity_ms, status, bonded, cor, v_rest, abp, pbcp), by diameter and speed.
+// velocity_ms, status, outcome, bonded, separation_speed, margin, extensions, cor, v_rest, abp,
+// pbcp), by diameter and speed.
 void write_vcrit_runs_csv(const std::filesystem::path& out_dir,
                           const std::vector<double>& diameters);
 

@@ -42,23 +42,27 @@ bool run_one(const std::string& case_path, const std::vector<case_file::Override
   });
 }
 
-std::string number(const nlohmann::json& j) {
+// A summary value as a CSV field: numbers, 1/0 for booleans, text (an outcome) quoted if need
+// be; nan for what is absent or null.
+std::string value(const nlohmann::json& j) {
   return j.is_number()    ? fmt::format("{:.10g}", j.get<double>())
          : j.is_boolean() ? std::string(j.get<bool>() ? "1" : "0")
+         : j.is_string()  ? csv_field(j.get<std::string>())
                           : std::string("nan");
 }
 
+// Per body: its measures (bonding.md#metrics), then its verdict's (bonding.md#the-verdict).
 constexpr const char* kBodyColumns[] = {"cor",
                                         "v_rest",
                                         "abp",
                                         "pbcp",
-                                        "bonded",
                                         "mean_eqps",
                                         "max_temperature",
                                         "plastic_energy_density",
                                         "jetted_fraction",
                                         "crater_depth",
                                         "flattening_ratio"};
+constexpr const char* kVerdictColumns[] = {"outcome", "separation_speed", "margin"};
 
 }  // namespace
 
@@ -76,9 +80,11 @@ void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary
   io::write_atomically(out_dir / "sweep.csv", [&](std::ostream& out) {
     out << "case,status";
     for (const Variation& v : vary) out << "," << csv_field(v.key);
-    out << ",steps,time,wall_seconds,energy_error,bonded";
-    for (const auto& b : bodies)
+    out << ",steps,time,wall_seconds,energy_error,bonded,outcome";
+    for (const auto& b : bodies) {
       for (const char* q : kBodyColumns) out << "," << csv_field(b + "." + q);
+      for (const char* q : kVerdictColumns) out << "," << csv_field(b + "." + q);
+    }
     out << "\n";
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const nlohmann::json& s = summaries[i];
@@ -88,15 +94,19 @@ void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary
       for (const auto& o : cases[i].overrides) out << "," << csv_field(o.value);
       auto field = [&](const char* a, const char* b = nullptr) {
         if (!done || !s.contains(a)) return std::string("nan");
-        return number(b ? s[a].value(b, nlohmann::json()) : s[a]);
+        return value(b ? s[a].value(b, nlohmann::json()) : s[a]);
       };
       out << "," << field("steps") << "," << field("time") << "," << field("wall_seconds") << ","
-          << field("energy", "relative_error") << "," << field("system", "bonded");
-      for (const auto& b : bodies)
-        for (const char* q : kBodyColumns) {
-          const bool has = done && s.contains("bodies") && s["bodies"].contains(b);
-          out << "," << (has ? number(s["bodies"][b].value(q, nlohmann::json())) : "nan");
-        }
+          << field("energy", "relative_error") << "," << field("system", "bonded") << ","
+          << field("system", "outcome");
+      for (const auto& b : bodies) {
+        const bool has = done && s.contains("bodies") && s["bodies"].contains(b);
+        const nlohmann::json& body = has ? s["bodies"][b] : nlohmann::json::object();
+        const nlohmann::json verdict = body.value("verdict", nlohmann::json::object());
+        for (const char* q : kBodyColumns) out << "," << value(body.value(q, nlohmann::json()));
+        for (const char* q : kVerdictColumns)
+          out << "," << value(verdict.value(q, nlohmann::json()));
+      }
       out << "\n";
     }
   });

@@ -36,6 +36,14 @@ TEST(InputErrors, UnknownKeySuggestsTheClosest) {
                 "unknown key 'spaceing'; did you mean 'spacing'?"});
 }
 
+// A retired key says what replaced it, not just "unknown key".
+TEST(InputErrors, RetiredKeyNamesItsReplacement) {
+  expect_error({"retired-key.yaml", "13:3", "metrics.bonded_rest_speed",
+                "was removed: the bonded verdict no longer reads v_rest at one instant"});
+  const InputError e = input_error([] { load_case(case_path("retired-key.yaml")); });
+  EXPECT_TRUE(contains(e.message(), "; use metrics.bonded_separation_speed (default 2 m/s)"));
+}
+
 TEST(InputErrors, ListWhereAQuantityIsExpected) {
   expect_error({"list-for-quantity.yaml", "6:57", "bodies.particle.shape.radius",
                 "expected a length such as '1 m', got a list"});
@@ -81,6 +89,8 @@ TEST(InputErrors, NonPhysicalValuesGivenByOverride) {
       {"solver.end_time=-1 ns", "solver.end_time", "must be > 0"},
       {"output.history_interval=-1 ns", "output.history_interval", "must be >= 0"},
       {"contact.friction=-0.1", "contact.friction", "must be >= 0"},
+      {"metrics.bonded_separation_speed=0 m/s", "metrics.bonded_separation_speed", "must be > 0"},
+      {"metrics.verdict_window=0 ns", "metrics.verdict_window", "must be > 0"},
   };
   for (const Bad& bad : cases) {
     SCOPED_TRACE(bad.set);
@@ -191,6 +201,15 @@ TEST(InputErrors, OtherMistakes) {
        "output.probes.p.fields",
        "needs at least one field"},
       {{"bodies=[]"}, "bodies", "needs at least one body"},
+      {{"metrics.verdict_extensions=1.5"},
+       "metrics.verdict_extensions",
+       "expected a whole number >= 0, got '1.5'"},
+      {{"metrics.verdict_extensions=-1"},
+       "metrics.verdict_extensions",
+       "expected a whole number >= 0, got '-1'"},
+      {{"metrics.bonded_pbcp=5"},
+       "metrics.bonded_pbcp",
+       "was removed: PBCP does not separate bonded from rebounding particles"},
       {{"name=a/b"}, "name", "must be usable as a folder name"},
       {{"solver=7"}, "solver", "expected a map of keys, got text '7'"},
       {{"materials.m={base: al-ptw, elastic: {shear_modulus: 1 GPa, youngs_modulus: 2 GPa}}",

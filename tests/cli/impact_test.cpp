@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
 #include <vector>
@@ -171,20 +172,58 @@ TEST(Impact, SchemaErrorsNameTheOptionThatGaveTheValue) {
   EXPECT_EQ(geometry.status, 2) << geometry.output;
 }
 
-TEST(Impact, TinyRunWritesTheSummaryAndPrintsTheVerdict) {
+// `coldspray impact OPTIONS --out result --quiet --threads 1` in a fresh folder: what it printed
+// and its summary.json (null if it failed).
+struct ImpactRun {
+  std::string output;
+  nlohmann::json summary;
+};
+ImpactRun run_impact(const std::string& options) {
   const std::string dir = make_temp_dir("impact");
-  const auto r = run_coldspray(
-      "impact --material al-ptw --diameter 4um --grid 1um/0.5um --end-time 2ns "
-      "--velocity 500m/s --out result --quiet --threads 1",
-      dir);
-  ASSERT_EQ(r.status, 0) << r.output;
+  const auto r = run_coldspray("impact " + options + " --out result --quiet --threads 1", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  const fs::path summary = fs::path(dir) / "result" / "summary.json";
+  return {r.output,
+          fs::exists(summary) ? nlohmann::json::parse(read_text(summary)) : nlohmann::json()};
+}
+
+// 2 ns is shorter than the 20 ns window, and with no extension allowed the run ends there:
+// undecided, read over the whole run, in which the particle is still moving in (a negative mean
+// separation speed) and has no bond yet.
+TEST(Impact, TinyRunWritesTheSummaryAndPrintsTheVerdict) {
+  const ImpactRun r = run_impact(
+      "--material al-ptw --diameter 4um --grid 1um/0.5um --end-time 2ns --velocity 500m/s "
+      "--set metrics.verdict_extensions=0");
   for (const char* field :
-       {"verdict:", "cor ", "v_rest ", "pbcp ", "jetted ", "results in result/"})
+       {"verdict: UNDECIDED (mean separation speed -", " m/s over the last 2 ns, margin ",
+        "; bonded area 0 um^2)", "cor ", "v_rest ", "pbcp ", "jetted ", "results in result/"})
     EXPECT_NE(r.output.find(field), std::string::npos) << field << "\n" << r.output;
-  const std::string summary = read_text(fs::path(dir) / "result" / "summary.json");
-  const auto system = summary.find("\"system\"");
-  ASSERT_NE(system, std::string::npos) << summary;
-  EXPECT_NE(summary.find("\"bonded\"", system), std::string::npos) << summary;
+  ASSERT_TRUE(r.summary.is_object());
+  EXPECT_EQ(r.summary["system"]["outcome"], "undecided");
+  EXPECT_EQ(r.summary["system"]["bonded"], false);
+  EXPECT_EQ(r.summary["bodies"]["particle"]["verdict"]["outcome"], "undecided");
+  EXPECT_FALSE(r.summary["bodies"]["substrate"].contains("verdict"));
+}
+
+// A 6 um particle bonding at once (G_c = 1 J/m^2): at 10 ns its 10 ns window still holds the
+// impact, and at 20 ns the particle, held by its bond, is still being pulled back (the window's
+// halves differ), so the run goes on two windows, to 30 ns, where it reads bonded, the margin
+// (threshold - mean) positive.
+TEST(Impact, AnUndecidedRunIsExtendedAndReadsBonded) {
+  const ImpactRun r = run_impact(
+      "--material al-ptw --diameter 6um --velocity 800m/s --grid 0.5um/0.125um --Gc 1J/m^2 "
+      "--end-time 10ns --set metrics.verdict_window=10ns");
+  EXPECT_NE(r.output.find("verdict: BONDED after 2 extensions to 30 ns (mean separation speed "),
+            std::string::npos)
+      << r.output;
+  ASSERT_TRUE(r.summary.is_object());
+  const nlohmann::json& v = r.summary["bodies"]["particle"]["verdict"];
+  EXPECT_EQ(r.summary["system"]["outcome"], "bonded");
+  EXPECT_EQ(r.summary["system"]["extensions"], 2);
+  EXPECT_NEAR(r.summary["time"].get<double>(), 30e-9, 1e-18);
+  EXPECT_NEAR(v["window"].get<double>(), 10e-9, 1e-18);
+  EXPECT_NEAR(v["margin"].get<double>(), 2.0 - v["separation_speed"].get<double>(), 1e-12);
+  EXPECT_GT(v["margin"].get<double>(), 0.0);
 }
 
 TEST(ImpactExamples, EveryExamplePassesCheck) {

@@ -38,6 +38,14 @@ TEST(Cli, SweepRecordsAFailingCaseAndResumes) {
   const fs::path sw = fs::path(dir) / "sw";
   const std::string table = read_text(sw / "sweep.csv");
   EXPECT_NE(table.find("case_0001,ok,\"[0, 0, 1 m/s]\""), std::string::npos) << table;
+  // The system's verdict, and the body's measures and verdict (docs/studies.md): the block has no
+  // bonded area, so it reads rebounded.
+  EXPECT_NE(table.find(",energy_error,bonded,outcome,block.cor,"), std::string::npos) << table;
+  EXPECT_NE(
+      table.find(",block.flattening_ratio,block.outcome,block.separation_speed,block.margin\n"),
+      std::string::npos)
+      << table;
+  EXPECT_NE(table.find(",0,rebounded,"), std::string::npos) << table;
   EXPECT_NE(table.find("case_0002,\"fault: body 'block'"), std::string::npos) << table;
 
   const auto again = run_coldspray(kSweep, dir);

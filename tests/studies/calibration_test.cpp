@@ -1,7 +1,8 @@
-// The calibration's pieces that are not already the math's: classification by tolerances (thesis
-// eqs 4.8-4.9, §5.1.2), parameter grids with linear and log spacing, the run folders, and the
-// analysis of runs on disk: the calibrated pair where two sizes' boundaries cross or, where they
-// do not, at the midpoint of their closest approach.
+// The calibration's pieces that are not already the math's: classification by the runs' verdicts
+// or by tolerances (thesis eqs 4.8-4.9, §5.1.2), parameter grids with linear and log spacing, the
+// run folders, and the analysis of runs on disk: the calibrated pair where two sizes' boundaries
+// cross or, where they do not, at the midpoint of their closest approach, with undecided runs
+// left out.
 #include "studies/calibration.hpp"
 
 #include <gtest/gtest.h>
@@ -16,15 +17,28 @@
 namespace coldspray::studies {
 namespace {
 
+// By default a run is classified by its verdict; undecided runs, and runs whose summary has no
+// verdict, are left out.
+TEST(Classification, ByTheVerdict) {
+  const Classification rule;
+  EXPECT_EQ(classify(rule, {"bonded", 0.04, 0.0, 0.0}), 1);  // the tolerances are not looked at
+  EXPECT_EQ(classify(rule, {"rebounded", 0.0, 1.0, 50.0}), 0);
+  EXPECT_EQ(classify(rule, {"undecided", 0.0, 1.0, 50.0}), kLeftOut);
+  EXPECT_EQ(classify(rule, {"", 0.0, 1.0, 50.0}), kLeftOut);
+  EXPECT_EQ(describe(rule), "by the runs' verdicts");
+}
+
 TEST(Classification, CorAndPbcpBothMustPass) {
-  const Classification rule;  // cor <= 0.003, pbcp >= 5 %
-  EXPECT_EQ(classify(rule, 0.001, 0.0, 5.0), 1);
-  EXPECT_EQ(classify(rule, 0.003, 0.0, 72.0), 1);
-  EXPECT_EQ(classify(rule, -0.2, 0.0, 50.0), 1);  // still moving into the substrate
-  EXPECT_EQ(classify(rule, 0.0031, 0.0, 72.0), 0);
-  EXPECT_EQ(classify(rule, 0.001, 1.0, 4.9), 0);  // abp is not looked at
-  EXPECT_EQ(classify(rule, NAN, 0.0, 72.0), 0);
-  EXPECT_EQ(classify(rule, 0.0, 0.0, NAN), 0);
+  Classification rule;  // cor <= 0.003, pbcp >= 5 %
+  rule.by = Classification::By::CorPbcp;
+  EXPECT_EQ(classify(rule, {"", 0.001, 0.0, 5.0}), 1);
+  EXPECT_EQ(classify(rule, {"", 0.003, 0.0, 72.0}), 1);
+  EXPECT_EQ(classify(rule, {"", -0.2, 0.0, 50.0}), 1);  // still moving into the substrate
+  EXPECT_EQ(classify(rule, {"", 0.0031, 0.0, 72.0}), 0);
+  EXPECT_EQ(classify(rule, {"", 0.001, 1.0, 4.9}), 0);          // abp is not looked at
+  EXPECT_EQ(classify(rule, {"bonded", 0.0031, 0.0, 72.0}), 0);  // nor the verdict
+  EXPECT_EQ(classify(rule, {"", NAN, 0.0, 72.0}), 0);
+  EXPECT_EQ(classify(rule, {"", 0.0, 0.0, NAN}), 0);
 }
 
 TEST(Classification, CorAndAbpAsEq48) {
@@ -32,9 +46,9 @@ TEST(Classification, CorAndAbpAsEq48) {
   rule.by = Classification::By::CorAbp;
   rule.cor_max = 0.002;
   rule.abp_min = 0.15;  // thesis eq 4.8, the 14 um particle
-  EXPECT_EQ(classify(rule, 0.002, 0.15, 0.0), 1);
-  EXPECT_EQ(classify(rule, 0.002, 0.149, 100.0), 0);
-  EXPECT_EQ(classify(rule, 0.0021, 0.5, 100.0), 0);
+  EXPECT_EQ(classify(rule, {"", 0.002, 0.15, 0.0}), 1);
+  EXPECT_EQ(classify(rule, {"", 0.002, 0.149, 100.0}), 0);
+  EXPECT_EQ(classify(rule, {"", 0.0021, 0.5, 100.0}), 0);
   EXPECT_EQ(describe(rule), "cor <= 0.002 and abp >= 0.15");
 }
 
@@ -71,11 +85,14 @@ TEST(CalibrationRuns, OneFolderPerGridSizeAndParameters) {
   EXPECT_EQ(runs.back().size, 1u);
 }
 
-// Writes, for every run of `plan`, the summary.json of a particle that sticks (cor 0, pbcp 50 %)
-// where bonds(size, x1, x2), and rebounds (cor 0.04, pbcp 0) elsewhere; analyses the runs.
+// Writes, for every run of `plan`, the summary.json of a particle that sticks (verdict bonded,
+// cor 0, pbcp 50 %) where bonds(size, x1, x2), and rebounds (rebounded, cor 0.04, pbcp 0)
+// elsewhere, but undecided where undecided(x1, x2); analyses the runs.
 std::vector<GridResult> analyse_synthetic(
     const CalibrationPlan& plan, const std::function<bool(std::size_t, double, double)>& bonds,
-    const std::string& tag, std::string* json = nullptr) {
+    const std::string& tag, std::string* json = nullptr,
+    const std::function<bool(double, double)>& undecided = [](double, double) { return false; },
+    std::string* runs_csv = nullptr) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() /
       ("coldspray_calibration_" + tag + "_" +
@@ -84,15 +101,20 @@ std::vector<GridResult> analyse_synthetic(
   for (const CalibrationRun& run : calibration_runs(plan, dir)) {
     std::filesystem::create_directories(run.folder);
     const bool stuck = bonds(run.size, run.x1, run.x2);
+    const char* outcome = undecided(run.x1, run.x2) ? "undecided" : stuck ? "bonded" : "rebounded";
     std::ofstream(run.folder / "summary.json")
         << R"({"status": "ok", "bodies": {"particle": {"cor": )" << (stuck ? 0.0 : 0.04)
-        << R"(, "abp": 1, "pbcp": )" << (stuck ? 50.0 : 0.0) << R"(, "v_rest": 0}}})";
+        << R"(, "abp": 1, "pbcp": )" << (stuck ? 50.0 : 0.0)
+        << R"(, "v_rest": 0, "verdict": {"outcome": ")" << outcome
+        << R"(", "separation_speed": 0.5, "margin": 1.5}}}})";
   }
   const std::vector<GridResult> results = analyse_calibration(plan, dir, tag);
-  if (json) {
-    std::ifstream in(dir / "calibration.json");
-    *json = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  }
+  auto text = [&dir](const char* name) {
+    std::ifstream in(dir / name);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  if (json) *json = text("calibration.json");
+  if (runs_csv) *runs_csv = text("runs.csv");
   std::filesystem::remove_all(dir);
   return results;
 }
@@ -142,6 +164,29 @@ TEST(CalibrationAnalysis, ParallelBoundariesGiveTheClosestApproachMidpoint) {
   EXPECT_NEAR((*g.calibrated)[0], 0.5, 0.02);
   EXPECT_NE(g.diagnosis.find("closest approach"), std::string::npos) << g.diagnosis;
   EXPECT_NE(json.find(R"("calibrated_by": "closest approach")"), std::string::npos) << json;
+}
+
+// The crossing case with the runs at x1 = 1/8 undecided: they are left out of the fit, counted,
+// and listed in runs.csv with an empty y; the boundaries, fitted on the rest, still cross near
+// (0.5, 0.5).
+TEST(CalibrationAnalysis, UndecidedRunsAreLeftOutAndCounted) {
+  std::string json, runs;
+  const auto results = analyse_synthetic(
+      unit_square_plan(),
+      [](std::size_t size, double x1, double x2) { return size == 0 ? x2 < x1 : x2 < 1.0 - x1; },
+      "undecided", &json, [](double x1, double) { return x1 == 0.125; }, &runs);
+  ASSERT_EQ(results.size(), 1u);
+  for (const SizeResult& r : results[0].sizes) {
+    EXPECT_EQ(r.runs, 81u);
+    EXPECT_EQ(r.undecided, 9u);  // one column of 9
+    EXPECT_EQ(r.bonded + r.not_bonded, 72u);
+    EXPECT_EQ(r.failed, 0u);
+  }
+  ASSERT_TRUE(results[0].calibrated.has_value()) << results[0].diagnosis;
+  EXPECT_NEAR((*results[0].calibrated)[0], 0.5, 0.07);
+  EXPECT_NE(json.find(R"("undecided": 9)"), std::string::npos) << json;
+  EXPECT_NE(runs.find(",0.125,0,ok,undecided,0.5,1.5,"), std::string::npos) << runs;
+  EXPECT_NE(runs.find(",0.125,1,ok,undecided,0.5,1.5,0.04,1,0,0,\n"), std::string::npos) << runs;
 }
 
 }  // namespace

@@ -303,6 +303,42 @@ class PlotToolTest(unittest.TestCase):
         result = self.run_tool("history", missing, "--columns", "kinetic", "--out", path)
         self.assert_failed_without_png(result, path, missing)
 
+    def test_calibration_draws_verdicts_or_tolerances(self):
+        for by in ("verdict", "cor-pbcp"):
+            folder = write_calibration(self.out("calibration-" + by), by)
+            path = self.out(f"calibration-{by}.png")
+            self.assert_png(self.run_tool("calibration", folder, "--out", path), path)
+
+
+def write_calibration(folder, by):
+    """A calibration folder as src/studies/calibration.cpp writes it: one grid, one size, four
+    runs (one of each outcome and one more bonded), and a straight boundary."""
+    import json
+    os.makedirs(folder, exist_ok=True)
+    rule = {"by": by} if by == "verdict" else {"by": by, "cor_max": 0.01, "pbcp_min": 5.0}
+    axis = {"key": "critical_energy", "unit": "J/m^2", "from": 10.0, "to": 1000.0, "count": 2,
+            "spacing": "log"}
+    result = {"name": "test",
+              "parameters": {"x1": axis, "x2": dict(axis, key="critical_energy_rate")},
+              "grids": [{"grid": "1um/0.25um", "calibrated": {"critical_energy": 100.0,
+                                                              "critical_energy_rate": 100.0},
+                         "sizes": [{"size": "14um", "diameter_um": 14, "velocity_ms": 810,
+                                    "classify": rule, "boundary_csv": "boundary_14um.csv"}]}]}
+    with open(os.path.join(folder, "calibration.json"), "w") as f:
+        json.dump(result, f)
+    with open(os.path.join(folder, "runs.csv"), "w") as f:
+        f.write("grid,size,diameter_um,velocity_ms,critical_energy,critical_energy_rate,status,"
+                "outcome,separation_speed,margin,cor,abp,pbcp,v_rest,y\n")
+        for x1, x2, outcome, speed, cor, pbcp, y in (
+                (10, 10, "bonded", 0.3, 0.001, 50, "1"), (10, 1000, "bonded", -0.2, 0.0, 45, "1"),
+                (1000, 10, "rebounded", 28.0, 0.04, 41, "0"),
+                (1000, 1000, "undecided", 1.0, 0.002, 48, "" if by == "verdict" else "1")):
+            f.write(f"1um/0.25um,14um,14,810,{x1},{x2},ok,{outcome},{speed},{2 - speed},{cor},1,"
+                    f"{pbcp},{speed},{y}\n")
+    with open(os.path.join(folder, "boundary_14um.csv"), "w") as f:
+        f.write("x1,x2,curve\n10,1000,0\n1000,10,0\n")
+    return folder
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)
