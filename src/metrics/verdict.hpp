@@ -42,9 +42,10 @@ struct Verdict {
 // rebounded when the bonding model is off (no bond can form, rule.bonding); undecided when the
 // series is shorter than the window, or the means of the window's halves differ by more than the
 // threshold (the body still accelerates, is pulled back or is in its impact; a NaN separation
-// velocity counts as that); rebounded when there is no bonded area at the end, or when the mean
-// exceeds the threshold; bonded when the bonded area held (never fell, within kAreaTolerance, below
-// its value at the window's start); undecided otherwise.
+// velocity counts as that); rebounded when there is no bonded area at the end; when the mean
+// exceeds the threshold, rebounded if the bonded area fell and undecided if it held (a kept bond
+// does not let go: the body is still relaxing on it); bonded when the bonded area held (never fell,
+// within kAreaTolerance, below its value at the window's start); undecided otherwise.
 Verdict decide(std::span<const VerdictSample> series, const VerdictRule& rule);
 
 // The relative fall of bonded area within the window that still counts as holding: the area of a

@@ -50,12 +50,20 @@ TEST(Verdict, ARingingStuckBodyIsBonded) {
   EXPECT_NEAR(series.back().separation_velocity, -2.0 * std::sqrt(3.0), 1e-9);
 }
 
-// A body leaving at a steady 20 m/s: mean 20, margin 2 - 20 = -18 m/s, settled.
+// A body leaving at a steady 20 m/s as its bonded area falls (from 1e-10 to 0.5e-10 m^2): mean
+// 20, margin 2 - 20 = -18 m/s, settled, rebounded. Had its area held, the kept bond would still
+// hold it: undecided.
 TEST(Verdict, ABodyLeavingSteadilyRebounds) {
+  const auto falling = [](double t) { return 1e-10 * (1.0 - 0.5 * (t / kNs - 50.0) / 30.0); };
   const auto series = sampled(
-      50.0, 80.0, [](double) { return 20.0; }, kHeld);
+      50.0, 80.0, [](double) { return 20.0; }, falling);
   const Verdict v = decide(series, kRule);
   EXPECT_EQ(v.outcome, Outcome::Rebounded);
+  EXPECT_EQ(decide(sampled(
+                       50.0, 80.0, [](double) { return 20.0; }, kHeld),
+                   kRule)
+                .outcome,
+            Outcome::Undecided);
   EXPECT_NEAR(v.separation_speed, 20.0, 1e-12);
   EXPECT_NEAR(v.margin, -18.0, 1e-12);
   EXPECT_NEAR(v.settling, 0.0, 1e-12);
