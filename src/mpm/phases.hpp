@@ -143,8 +143,8 @@ inline void mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int par
 // half-width along n) and the nearest reach of the other's, over the points covering the node.
 // For bonding: each body's sum of D_bond N_I over its surface points there, and their number
 // (eq 4.6), the same sums for the bond laws the run shadows, and which sides of each pair have
-// bonded points there. Minima and maxima are exact in any
-// order, the sums run in block order, and the block colouring keeps threads off each other's nodes.
+// bonded points there. Minima and maxima are exact in any order, the sums run in block order, and
+// the block colouring keeps threads off each other's nodes.
 template <class Shape, bool Axisymmetric>
 void gather_contact_points(State& s) {
   const bool gap = s.contact_rule.gap_check, bonding = s.contact_rule.bonding;
