@@ -96,7 +96,7 @@ void expect_bonds_persist(const std::vector<case_file::Override>& overrides, int
 }
 
 TEST(BondPersistence, AxisymmetricInterfaceHolds) {
-  expect_bonds_persist({{"bonding.critical_energy", "60 J/m^2"}}, 1500);
+  expect_bonds_persist({{"bonding.critical_energy", "100 J/m^2"}}, 1500);
 }
 
 TEST(BondPersistence, ThreeDimensionalInterfaceHolds) {
