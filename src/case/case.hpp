@@ -118,14 +118,14 @@ enum class NodalAverage { Count, Weight };
 // thesis' G_c = 1503.74 J/m^2, Gdot_c = 2.271 J/m^2/us, which do not carry over to our floor.
 struct Bonding {
   BondingModel model = BondingModel::None;
-  double critical_strain = 1.4;             // eps_c, eq 4.4 (thesis §4.1.4's example)
-  double critical_strain_rate = 8.5e8;      // 1/s (850 /us)
-  double critical_energy = 400.24;          // G_c, J/m^2, eq 4.16b
-  double critical_energy_rate = 2.8207e11;  // Gdot_c, J/m^2/s (2.8207e5 J/m^2/us)
+  double critical_strain = 1.4;            // eps_c, eq 4.4 (thesis §4.1.4's example)
+  double critical_strain_rate = 8.5e8;     // 1/s (850 /us)
+  double critical_energy = 416.59;         // G_c, J/m^2, eq 4.16b
+  double critical_energy_rate = 9.502e11;  // Gdot_c, J/m^2/s (9.502e5 J/m^2/us)
   // eps_bond >= floor eps_c and G_bond >= floor G_c: the logarithm of eqs 4.4 and 4.16b
   // exceeds 1 at jetting rates and would make them negative (docs/bonding.md).
   double floor = 0.1;
-  NodalAverage nodal_average = NodalAverage::Count;
+  NodalAverage nodal_average = NodalAverage::Weight;
 
   friend bool operator==(const Bonding&, const Bonding&) = default;
 };

@@ -99,7 +99,7 @@ struct ContactRule {
   bool gap_check = true;
   // The direct bonding model is on: bonded nodes stick (thesis §4.1.1).
   bool bonding = false;
-  case_file::NodalAverage nodal_average = case_file::NodalAverage::Count;  // eq 4.6's divisor
+  case_file::NodalAverage nodal_average = case_file::NodalAverage::Weight;  // eq 4.6's divisor
 };
 
 // What the contact step did, for the history; and its per-step scratch.
@@ -151,7 +151,7 @@ inline void add_bond_share(double& sum, double bond, double weight) {
 double nodal_bond(const ContactNodes& contact, const std::vector<double>& bond_sum,
                   std::int32_t slot, int e1, int e2, case_file::NodalAverage average);
 inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1, int e2,
-                         case_file::NodalAverage average = case_file::NodalAverage::Count) {
+                         case_file::NodalAverage average) {
   return nodal_bond(contact, contact.bond_sum, slot, e1, e2, average);
 }
 

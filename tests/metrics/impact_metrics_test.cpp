@@ -123,13 +123,14 @@ TEST(NodalBond, AveragesEachBodyThenThePair) {
   c.surface_count[mpm::ContactNodes::flat(slot, a)] = 2;
   c.bond_sum[mpm::ContactNodes::flat(slot, b)] = 0.9;
   c.surface_count[mpm::ContactNodes::flat(slot, b)] = 3;
-  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.5 * (0.6 + 0.3), 1e-15);
-  EXPECT_FALSE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b)));
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Count), 0.5 * (0.6 + 0.3),
+              1e-15);
+  EXPECT_FALSE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Count)));
   c.bond_sum[mpm::ContactNodes::flat(slot, a)] = 3.4;  // 1.7 and 0.3: the mean is 1
-  EXPECT_TRUE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b)));
+  EXPECT_TRUE(mpm::bond_forms(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Count)));
   // A body with no surface point at the node contributes 0.
   c.surface_count[mpm::ContactNodes::flat(slot, b)] = 0;
-  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b), 0.85, 1e-15);
+  EXPECT_NEAR(mpm::nodal_bond(c, slot, a, b, case_file::NodalAverage::Count), 0.85, 1e-15);
 }
 
 // Weight-normalised: sum D N / sum N, the partition-of-unity mean. Two points of body a with

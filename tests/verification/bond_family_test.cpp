@@ -2,9 +2,9 @@
 // trajectory and leave it at different steps, or never, write exactly what run_case writes for
 // them, file for file and bit for bit, but for the wall time. The small bonding impact
 // (examples/verification/bonding-impact.yaml, 10 ns) with G_c = 1 and 1.5 J/m^2 bonds at first
-// contact, 50 J/m^2 some steps later, 200 and 3000 J/m^2 never bond a node (their particles
+// contact, 50 J/m^2 some steps later, 1000 and 3000 J/m^2 never bond a node (their particles
 // rebound). The verdict's window, 10 ns, holds the impact at 10 ns, so every member with bonded
-// area is undecided then and extended to 20 ns, on its branch or on the trunk (200 J/m^2), while
+// area is undecided then and extended to 20 ns, on its branch or on the trunk (1000 J/m^2), while
 // 3000 J/m^2, with none, ends on the trunk at 10 ns. A member whose folder cannot be written fails
 // alone.
 #include "run/bond_family.hpp"
@@ -61,7 +61,7 @@ nlohmann::json summary_without_timing(const fs::path& folder) {
 }
 
 TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
-  const std::vector<std::string> energies = {"1 J/m^2", "1.5 J/m^2", "50 J/m^2", "200 J/m^2",
+  const std::vector<std::string> energies = {"1 J/m^2", "1.5 J/m^2", "50 J/m^2", "1000 J/m^2",
                                              "3000 J/m^2"};
   const fs::path dir = testing::make_temp_dir("bond-family");
   std::vector<FamilyMember> members;
@@ -74,7 +74,7 @@ TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
     members.push_back({c, dir / "family" / std::to_string(i)});
   }
   std::ofstream(dir / "not-a-folder") << "a file where the last member's folder would go\n";
-  members.push_back({bonding_impact("200 J/m^2"), dir / "not-a-folder" / "member"});
+  members.push_back({bonding_impact("1000 J/m^2"), dir / "not-a-folder" / "member"});
 
   // Branches run after the trunk has returned, as a scheduler may run them.
   std::vector<std::function<void()>> branches;
@@ -86,7 +86,7 @@ TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
     failed[member] += failure != nullptr;
   };
   run_bond_family(members, hooks);
-  EXPECT_EQ(branches.size(), 3u);  // G_c = 1, 1.5 and 50 J/m^2 bond; 200 and 3000 never do
+  EXPECT_EQ(branches.size(), 3u);  // G_c = 1, 1.5 and 50 J/m^2 bond; 1000 and 3000 never do
   for (auto& branch : branches) branch();
   for (std::size_t i = 0; i < members.size(); ++i) {
     EXPECT_EQ(finished[i], 1) << i;

@@ -4,7 +4,12 @@
 // interface: at every step after the first bond, (a) no point loses its bond, (b) the bond force
 // acts at some node (the bond kept on the points, not only where eq 4.7's nodal average happens to
 // reach 1), and (c) every bonded particle point still has a bonded substrate point within two
-// cells: the interface has not opened anywhere it bonded.
+// cells: the interface has not opened anywhere it bonded. The cases use the thesis' count average
+// of eq 4.6, whose nodal value falls back below 1 on some steps after a bond formed, so that they
+// exercise the kept bond (with Gdot_c fixed at 2.8207e5 J/m^2/us, so that the shipped calibration
+// does not move them); with the weight average (the default) the nodal value is steadier and
+// stays >= 1 somewhere on every step of these runs (measured at G_c 150-200 J/m^2 in r-z and
+// 200 J/m^2 in 3D).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,7 +101,10 @@ void expect_bonds_persist(const std::vector<case_file::Override>& overrides, int
 }
 
 TEST(BondPersistence, AxisymmetricInterfaceHolds) {
-  expect_bonds_persist({{"bonding.critical_energy", "100 J/m^2"}}, 1500);
+  expect_bonds_persist({{"bonding.critical_energy", "100 J/m^2"},
+                        {"bonding.critical_energy_rate", "2.8207e5 J/m^2/us"},
+                        {"bonding.nodal_average", "count"}},
+                       1500);
 }
 
 TEST(BondPersistence, ThreeDimensionalInterfaceHolds) {
@@ -107,7 +115,9 @@ TEST(BondPersistence, ThreeDimensionalInterfaceHolds) {
                         {"grid.faces", "{xmin: roller, ymin: roller}"},
                         {"bodies.particle.spacing", "0.25 um"},
                         {"bodies.substrate.spacing", "0.25 um"},
-                        {"bonding.critical_energy", "60 J/m^2"}},
+                        {"bonding.critical_energy", "60 J/m^2"},
+                        {"bonding.critical_energy_rate", "2.8207e5 J/m^2/us"},
+                        {"bonding.nodal_average", "count"}},
                        1000);
 }
 
