@@ -35,17 +35,10 @@ void for_each_point_by_block(const Blocks& blocks, F&& f) {
 template <bool Axisymmetric>
 struct PointContribution {
   double m, mv[3], Vs[6], fext[3], hoop;
-  // The point's weight in the body's normal of eq 3.30. In r-z m is a ring's mass, 2 pi r rho A,
-  // which grows with r: summed with grad N_I it tilts a flat face's normal towards the axis by
-  // atan(h / 2r), so a frictionless interface resists radial slip (the r-z impact then deformed
-  // as if welded, against the 3D model's free slip, issue 22). The normal is that of the body's
-  // cross-section, the gradient of its density in the r-z plane: m / r weighs it.
-  double m_normal;
 
   PointContribution(const State& s, std::size_t p) {
     const Points& P = s.points;
     m = P.mass[p];
-    m_normal = Axisymmetric ? m / P.position[0][p] : m;
     for (int d = 0; d < 3; ++d) {
       mv[d] = m * P.velocity[d][p];
       fext[d] = s.external_force[d][p];
@@ -118,6 +111,12 @@ void map_bodies_to_contact_nodes(State& s) {
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     if (!near_contact(s, st)) return;
     const PointContribution<Axisymmetric> c(s, p);
+    // The point's weight in the body's normal of eq 3.30. In r-z m is a ring's mass, 2 pi r rho A,
+    // which grows with r: summed with grad N_I it tilts a flat face's normal towards the axis by
+    // atan(h / 2r), so a frictionless interface resists radial slip (the r-z impact then deformed
+    // as if welded, against the 3D model's free slip, issue 22). The normal is that of the body's
+    // cross-section, the gradient of its density in the r-z plane: m / r weighs it.
+    const double m_normal = Axisymmetric ? c.m / s.points.position[0][p] : c.m;
     const int b = s.points.body[p];
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       const std::int32_t slot = s.grid.contact_slot[n];
@@ -130,7 +129,7 @@ void map_bodies_to_contact_nodes(State& s) {
       for (int d = 0; d < 3; ++d) {
         cn.momentum[d][e] += w * c.mv[d];
         cn.force[d][e] += f[d];
-        cn.mass_gradient[d][e] += c.m_normal * grad[d];
+        cn.mass_gradient[d][e] += m_normal * grad[d];
       }
     });
   });

@@ -3,7 +3,7 @@
 // - the contact normal of eq 3.30 is the z axis, in 3D and in r-z. In r-z a point's mass is a
 //   ring's, 2 pi r rho A; weighing the gradient with it tilted the normal towards the axis by
 //   atan(h / 2r) (27 degrees at r = h, 6 at r = 5h), which made a frictionless interface resist
-//   radial slip (mpm/phases.hpp, PointContribution::m_normal);
+//   radial slip (mpm/phases.hpp, map_bodies_to_contact_nodes);
 // - eq 4.6's nodal D_bond of surface points that all carry the same D_bond is that D_bond by
 //   weight (the default) in both geometries, while by count (the thesis' divisor) it depends on
 //   how many points of small weight the node's support holds, which differs between the r-z
