@@ -5,12 +5,12 @@
 
 namespace coldspray::metrics {
 
-std::vector<BodyMetrics> body_metrics(const mpm::State& s) {
-  const mpm::Points& P = s.points;
+std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s) {
+  const bodies::Points& P = s.points;
   const std::size_t bodies = s.bodies.size();
   std::vector<BodyMetrics> out;
   for (std::size_t b = 0; b < bodies; ++b) {
-    const mpm::BodyRange& r = s.bodies[b];
+    const bodies::BodyRange& r = s.bodies[b];
     BodyMetrics m;
     m.name = r.name;
     m.extent_min.fill(std::numeric_limits<double>::max());
@@ -37,7 +37,7 @@ std::vector<BodyMetrics> body_metrics(const mpm::State& s) {
     if (s.dt > 0.0)
       for (std::size_t o = 0; o < bodies; ++o)
         for (int d = 0; d < 3; ++d)
-          m.contact_force[d] += s.contact_result.impulse[b * bodies + o][d] / s.dt;
+          m.contact_force[d] += s.contact_impulse[b * bodies + o][d] / s.dt;
     m.impact = impact_measures(s, b);
     m.departed = r.departed;
     out.push_back(std::move(m));

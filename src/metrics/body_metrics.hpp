@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "bodies/bodies.hpp"
 #include "metrics/impact_metrics.hpp"
 #include "metrics/verdict.hpp"
-#include "mpm/state.hpp"
 
 namespace coldspray::metrics {
 
@@ -24,13 +24,13 @@ struct BodyMetrics {
   double max_temperature = 0.0;           // K
   std::array<double, 3> contact_force{};  // from all other bodies over the last step, N
   ImpactMeasures impact;
-  mpm::Departed departed;  // the points that have left the grid (the rest are of those on it)
+  bodies::Departed departed;  // the points that have left the grid (the rest are of those on it)
   // For a body that moved in z at t = 0, at the end of a run: the verdict on its last window
   // (run/verdict_series.hpp); body_metrics leaves it empty.
   std::optional<Verdict> verdict;
 };
 
 // In index order: independent of the thread count.
-std::vector<BodyMetrics> body_metrics(const mpm::State& s);
+std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s);
 
 }  // namespace coldspray::metrics

@@ -2,8 +2,8 @@
 
 namespace coldspray::metrics {
 
-EnergyBudget energy_budget(const mpm::State& s) {
-  const mpm::Points& P = s.points;
+EnergyBudget energy_budget(const bodies::Bodies& s) {
+  const bodies::Points& P = s.points;
   EnergyBudget e;
   for (std::size_t p = 0; p < P.size(); ++p) {
     const double v2 = P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
@@ -14,9 +14,9 @@ EnergyBudget energy_budget(const mpm::State& s) {
     e.viscous += P.viscous_work[p];
     e.contact -= P.contact_work[p];
   }
-  for (const mpm::AbsorbingPoint& a : s.absorbing) e.absorbed += a.absorbed;
-  for (const mpm::BodyRange& b : s.bodies) {
-    const mpm::Departed& d = b.departed;
+  for (const bodies::AbsorbingPoint& a : s.absorbing) e.absorbed += a.absorbed;
+  for (const bodies::BodyRange& b : s.bodies) {
+    const bodies::Departed& d = b.departed;
     e.viscous += d.viscous_work;
     e.absorbed += d.absorbed;
     e.contact -= d.contact_work;

@@ -1,10 +1,10 @@
-// The energy budget of an MPM run: kinetic + internal + viscous + absorbed + contact + departed
+// The energy budget of a run: kinetic + internal + viscous + absorbed + contact + departed
 // must stay equal to the initial total (kinetic + internal at t = 0). Kinetic, internal and
 // plastic work are of the points on the grid; the works done (viscous, absorbed, contact) count
 // the points that have left it too, and `departed` is what those carried off (mpm/departures.hpp).
 #pragma once
 
-#include "mpm/state.hpp"
+#include "bodies/bodies.hpp"
 
 namespace coldspray::metrics {
 
@@ -23,6 +23,6 @@ struct EnergyBudget {
 
 // Sums over points in index order, then over the bodies' departed ledgers, so the result does not
 // depend on the thread count.
-EnergyBudget energy_budget(const mpm::State& s);
+EnergyBudget energy_budget(const bodies::Bodies& s);
 
 }  // namespace coldspray::metrics

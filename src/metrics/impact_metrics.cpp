@@ -13,8 +13,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The surface area a point stands for: V^(2/3) in 3D; in r-z the ring 2 pi r a of side
 // a = sqrt(V / (2 pi r)).
-double point_area(const mpm::State& s, std::size_t p) {
-  const mpm::Points& P = s.points;
+double point_area(const bodies::Bodies& s, std::size_t p) {
+  const bodies::Points& P = s.points;
   const double V = P.volume0[p] * P.J[p];
   if (s.geometry != case_file::Geometry::Axisymmetric) return std::cbrt(V * V);
   const double r = P.position[0][p];
@@ -23,7 +23,7 @@ double point_area(const mpm::State& s, std::size_t p) {
 
 // The factor from the modelled part of a body to the whole: 2 per symmetry plane it was cut at
 // in 3D (a quarter model counts 4); an r-z point already stands for its whole ring.
-double whole_body_factor(const mpm::State& s, const mpm::BodyRange& r) {
+double whole_body_factor(const bodies::Bodies& s, const bodies::BodyRange& r) {
   if (s.geometry == case_file::Geometry::Axisymmetric) return 1.0;
   double factor = 1.0;
   for (const auto& plane : r.mirror_plane)
@@ -31,16 +31,16 @@ double whole_body_factor(const mpm::State& s, const mpm::BodyRange& r) {
   return factor;
 }
 
-double speed(const mpm::Points& P, std::size_t p) {
+double speed(const bodies::Points& P, std::size_t p) {
   const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
 }  // namespace
 
-RestAndBond rest_and_bond(const mpm::State& s, std::size_t body) {
-  const mpm::Points& P = s.points;
-  const mpm::BodyRange& r = s.bodies[body];
+RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body) {
+  const bodies::Points& P = s.points;
+  const bodies::BodyRange& r = s.bodies[body];
   RestAndBond out;
   for (std::size_t p = r.begin; p < r.end; ++p) {
     out.mass += P.mass[p];
@@ -55,9 +55,9 @@ RestAndBond rest_and_bond(const mpm::State& s, std::size_t body) {
   return out;
 }
 
-ImpactMeasures impact_measures(const mpm::State& s, std::size_t body) {
-  const mpm::Points& P = s.points;
-  const mpm::BodyRange& r = s.bodies[body];
+ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
+  const bodies::Points& P = s.points;
+  const bodies::BodyRange& r = s.bodies[body];
   ImpactMeasures m;
   m.moving = r.initial_velocity[2] != 0.0;
 

@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "mpm/state.hpp"
+#include "bodies/bodies.hpp"
 
 namespace coldspray::metrics {
 
@@ -29,11 +29,11 @@ struct ImpactMeasures {
   // Diameter across the axis of the body's points that are not jetted, over that at t = 0.
   double flattening_ratio = 0.0;
   double contact_area = 0.0;  // surface area of the points that touched another body, m^2
-  double bonded_area = 0.0;   // of those that keep a bond (mpm::Points::bonded_to), m^2
+  double bonded_area = 0.0;   // of those that keep a bond (bodies::Points::bonded_to), m^2
   bool moving = false;        // started with a z velocity: cor and the verdict apply
 };
 
-ImpactMeasures impact_measures(const mpm::State& s, std::size_t body);
+ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body);
 
 // What the verdict follows of a body, from one pass over its points, as ImpactMeasures counts
 // it: the mass and z momentum of all its points and of those at rest (v_rest = rest_momentum_z /
@@ -46,6 +46,6 @@ struct RestAndBond {
   double bonded_area = 0.0;      // m^2
 };
 
-RestAndBond rest_and_bond(const mpm::State& s, std::size_t body);
+RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body);
 
 }  // namespace coldspray::metrics

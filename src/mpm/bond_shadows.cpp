@@ -8,7 +8,7 @@
 
 namespace coldspray::mpm {
 
-void BondShadows::follow(const std::vector<bonding::BondLaw>& laws, const Points& P) {
+void BondShadows::follow(const std::vector<bonding::BondLaw>& laws, const bodies::Points& P) {
   laws_ = laws;
   ids_.resize(laws.size());
   for (std::size_t k = 0; k < laws.size(); ++k) ids_[k] = k;
@@ -61,18 +61,18 @@ bool BondShadows::bonds_now(std::size_t k, const ContactNodes& c,
   return false;
 }
 
-void BondShadows::impose(std::size_t k, Points& P, ContactNodes& c) const {
+void BondShadows::impose(std::size_t k, bodies::Points& P, ContactNodes& c) const {
   write_bond(k, P);
   const std::size_t entries = c.size() * kMaxBodiesPerNode;
   std::copy(bond_sum_[k].begin(), bond_sum_[k].begin() + static_cast<std::ptrdiff_t>(entries),
             c.bond_sum.begin());
 }
 
-void BondShadows::write_bond(std::size_t k, Points& P) const {
+void BondShadows::write_bond(std::size_t k, bodies::Points& P) const {
   for (std::size_t col = 0; col < surface_.size(); ++col) P.bond[surface_[col]] = bond_[k][col];
 }
 
-void BondShadows::clear_bond(Points& P) const {
+void BondShadows::clear_bond(bodies::Points& P) const {
   for (const std::size_t p : surface_) P.bond[p] = 0.0;
 }
 

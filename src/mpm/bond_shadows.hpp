@@ -12,16 +12,16 @@
 #include <cstdint>
 #include <vector>
 
+#include "bodies/points.hpp"
 #include "bonding/bond_law.hpp"
 #include "mpm/contact.hpp"
-#include "mpm/points.hpp"
 
 namespace coldspray::mpm {
 
 class BondShadows {
  public:
   // Follows `laws` over the surface points of P; shadow k is laws[k] until one is dropped.
-  void follow(const std::vector<bonding::BondLaw>& laws, const Points& P);
+  void follow(const std::vector<bonding::BondLaw>& laws, const bodies::Points& P);
   bool active() const { return !laws_.empty(); }
   std::size_t size() const { return laws_.size(); }
   const bonding::BondLaw& law(std::size_t k) const { return laws_[k]; }
@@ -46,10 +46,10 @@ class BondShadows {
 
   // Shadow k's D_bond at P's surface points, and its sums into c.bond_sum: what the state would
   // hold, at this point of the step, had it run with law k.
-  void impose(std::size_t k, Points& P, ContactNodes& c) const;
+  void impose(std::size_t k, bodies::Points& P, ContactNodes& c) const;
   // Shadow k's D_bond into P.bond for output; clear_bond() puts the zeros back.
-  void write_bond(std::size_t k, Points& P) const;
-  void clear_bond(Points& P) const;
+  void write_bond(std::size_t k, bodies::Points& P) const;
+  void clear_bond(bodies::Points& P) const;
   // Stops following shadow k (its run has left the trajectory); the last shadow takes its index.
   void drop(std::size_t k);
   // The points `gone` (ascending) have left the run (mpm/departures.hpp): their columns go, the

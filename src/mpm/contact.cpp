@@ -179,7 +179,7 @@ double nodal_bond(const ContactNodes& c, const std::vector<double>& bond_sum, st
 }
 
 void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
-                     ContactResult& result) {
+                     std::vector<std::array<double, 3>>& impulse) {
   for (std::size_t s = 0; s < c.size(); ++s) {
     const auto slot = static_cast<std::int32_t>(s);
     for (int e1 = 0; e1 < c.body_count(slot); ++e1)
@@ -221,8 +221,8 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
         add_to(c.correction, fm, dp);
         add_to(c.correction, fs, -dp);
         for (int d = 0; d < 3; ++d) {
-          result.impulse[bm * bodies + bs][d] += dp[d];
-          result.impulse[bs * bodies + bm][d] -= dp[d];
+          impulse[bm * bodies + bs][d] += dp[d];
+          impulse[bs * bodies + bm][d] -= dp[d];
         }
       }
   }

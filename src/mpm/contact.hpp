@@ -102,15 +102,13 @@ struct ContactRule {
   case_file::NodalAverage nodal_average = case_file::NodalAverage::Weight;  // eq 4.6's divisor
 };
 
-// What the contact step did, for the history; and its per-step scratch.
+// The MVG choice of master bodies, kept from step to step, and its per-step scratch.
 struct ContactResult {
   // Per ordered body pair [a * bodies + b]: sum over the nodes they share of |grad m_a| / rho_a,
   // the weight that decides the pair's MVG master body.
   std::vector<double> gradient_weight;
   // Per ordered pair: 1 while a is the pair's MVG master, kept from step to step.
   std::vector<std::uint8_t> master;
-  // Impulse received by body a from body b this step, flattened [a * bodies + b], N s.
-  std::vector<std::array<double, 3>> impulse;
 };
 
 // For every pair of bodies at every contact node: which body's normal the pair uses (thesis
@@ -127,10 +125,11 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Where
 // the pair is bonded (a bond forms there, nodal D_bond of eq 4.7 >= 1, or one kept on the points
 // holds) the correction is applied in full, normal and tangential, approaching or not: the bond
-// force. Each correction changes the two bodies'
-// momenta by equal and opposite amounts, and their forces by the same over dt.
+// force. Each correction changes the two bodies' momenta by equal and opposite amounts, and
+// their forces by the same over dt; `impulse` (bodies::Bodies::contact_impulse) sums them per
+// ordered body pair.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
-                     ContactResult& result);
+                     std::vector<std::array<double, 3>>& impulse);
 
 // Adds a surface point's share D_bond N_I(x_p) to an entry's sum of eq 4.6. The run's sums and a
 // bond family's shadows of them (mpm/bond_shadows.hpp) both add through here, so that, with

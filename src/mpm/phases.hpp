@@ -46,14 +46,14 @@ struct PointContribution {
     const double V = P.volume0[p] * P.J[p];
     const double q = P.bulk_viscosity[p];
     for (int c = 0; c < 6; ++c) Vs[c] = V * (P.stress[c][p] - (c < 3 ? q : 0.0));
-    hoop = Axisymmetric ? Vs[kYY] / P.position[0][p] : 0.0;
+    hoop = Axisymmetric ? Vs[bodies::kYY] / P.position[0][p] : 0.0;
   }
 
   void force(double w, double gx, double gy, double gz, double f[3]) const {
-    f[0] = w * fext[0] - (Vs[kXX] * gx + Vs[kXY] * gy + Vs[kXZ] * gz);
+    f[0] = w * fext[0] - (Vs[bodies::kXX] * gx + Vs[bodies::kXY] * gy + Vs[bodies::kXZ] * gz);
     if constexpr (Axisymmetric) f[0] -= w * hoop;
-    f[1] = w * fext[1] - (Vs[kXY] * gx + Vs[kYY] * gy + Vs[kYZ] * gz);
-    f[2] = w * fext[2] - (Vs[kXZ] * gx + Vs[kYZ] * gy + Vs[kZZ] * gz);
+    f[1] = w * fext[1] - (Vs[bodies::kXY] * gx + Vs[bodies::kYY] * gy + Vs[bodies::kYZ] * gz);
+    f[2] = w * fext[2] - (Vs[bodies::kXZ] * gx + Vs[bodies::kYZ] * gy + Vs[bodies::kZZ] * gz);
   }
 };
 

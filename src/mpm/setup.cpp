@@ -9,10 +9,10 @@
 #include <numbers>
 #include <optional>
 
+#include "bodies/material_state.hpp"
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
 #include "materials/stress_update.hpp"
-#include "mpm/material_state.hpp"
 #include "mpm/phases.hpp"
 #include "mpm/stencil.hpp"
 
@@ -344,7 +344,8 @@ State build_state(const case_file::Case& c) {
   s.contact_rule.friction = c.contact.friction;
   s.contact_rule.gap_check = c.contact.gap_check;
   s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid.cell_size);
-  s.contact_rule.bonding = s.bond_law.enabled();
+  s.bonding = s.bond_law.enabled();
+  s.contact_rule.bonding = s.bonding;
   s.contact_rule.nodal_average = c.bonding.nodal_average;
   s.impact_metrics = c.metrics;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
@@ -353,7 +354,7 @@ State build_state(const case_file::Case& c) {
         c.bodies[b].name == c.contact.normal_body)
       s.contact_rule.normal_body = static_cast<int>(b);
   }
-  s.contact_result.impulse.assign(c.bodies.size() * c.bodies.size(), {0.0, 0.0, 0.0});
+  s.contact_impulse.assign(c.bodies.size() * c.bodies.size(), {0.0, 0.0, 0.0});
   s.contact_result.gradient_weight.assign(c.bodies.size() * c.bodies.size(), 0.0);
   s.contact_result.master.assign(c.bodies.size() * c.bodies.size(), 0);
 

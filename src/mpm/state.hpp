@@ -11,54 +11,23 @@
 #include <tuple>
 #include <vector>
 
+#include "bodies/bodies.hpp"
 #include "bonding/bond_law.hpp"
 #include "case/case.hpp"
 #include "materials/material.hpp"
 #include "mpm/bond_shadows.hpp"
 #include "mpm/contact.hpp"
 #include "mpm/grid.hpp"
-#include "mpm/points.hpp"
 #include "mpm/stencil.hpp"
 #include "mpm/work_shares.hpp"
 
 namespace coldspray::mpm {
 
-// What a body's points carried off the grid when they left it (mpm/departures.hpp), summed over
-// them in index order at the end of the step in which each left.
-struct Departed {
-  std::size_t points = 0;
-  double mass = 0.0;                 // kg
-  std::array<double, 3> momentum{};  // kg m/s
-  double kinetic = 0.0;              // 1/2 m v^2, J
-  double internal = 0.0;             // E V0, J
-  double plastic_work = 0.0;         // J, part of internal
-  double viscous_work = 0.0;         // J
-  double contact_work = 0.0;         // J
-  double absorbed = 0.0;             // work done on their dashpots, J (absorbing-face points)
-};
-
-struct BodyRange {
-  std::string name;
-  std::size_t begin = 0;  // the body's points are [begin, end)
-  std::size_t end = 0;
-  materials::Material material;
-  double spacing = 0.0;
-  std::array<double, 3> initial_velocity{};  // m/s
-  double initial_diameter = 0.0;             // lateral extent at t = 0, m
-  // Where the body was cut by a symmetry plane normal to x or y (in r-z, x = r is cut at the
-  // axis r = 0): the whole body is the modelled part and its mirror image, so its centre lies on
-  // the plane and its areas are twice the modelled part's.
-  std::array<std::optional<double>, 2> mirror_plane{};
-  Departed departed{};  // the body's points that have left the grid
-};
-
-// A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give
-// it the force -damping[a] * v_a along each axis a.
-struct AbsorbingPoint {
-  std::size_t point = 0;
-  std::array<double, 3> damping{};  // N s/m
-  double absorbed = 0.0;            // work done on the dashpots so far, J
-};
+using bodies::AbsorbingPoint;
+using bodies::BodyRange;
+using bodies::Departed;
+using bodies::Fault;
+using bodies::Points;
 
 // Bits of State::constraint: the velocity components held at zero at a node.
 enum NodeConstraint : std::uint8_t { kHoldX = 1, kHoldY = 2, kHoldZ = 4 };
@@ -85,15 +54,9 @@ struct Blocks {
   std::vector<std::size_t> cursor;      // scratch: kSortChunks x blocks counts, then offsets
 };
 
-// A fault found during a step: the lowest point index at fault, so the report is the same
-// whatever the threads.
-struct Fault {
-  std::size_t point = std::numeric_limits<std::size_t>::max();
-  std::string cause;
-};
-
-struct State {
-  case_file::Geometry geometry = case_file::Geometry::ThreeD;
+// The bodies (bodies/bodies.hpp: points, ranges, boundary points, clock) and the grid that moves
+// them.
+struct State : bodies::Bodies {
   case_file::ShapeFunction shape_function = case_file::ShapeFunction::Gimp;
   case_file::ArtificialViscosity viscosity;
 
@@ -102,9 +65,6 @@ struct State {
   std::vector<std::uint8_t> constraint;    // NodeConstraint bits per node
   std::vector<std::uint8_t> near_contact;  // per node: a stencil based there reaches contact
 
-  Points points;
-  std::vector<BodyRange> bodies;
-  std::vector<AbsorbingPoint> absorbing;
   std::array<std::vector<double>, 3> external_force;  // per point, N (dashpots)
   Blocks blocks;
   WorkShares stress_shares;  // the threads' shares of the stress update
@@ -122,18 +82,12 @@ struct State {
   // Other runs' bond laws followed alongside (studies' bond families); while any are, this run's
   // own D_bond stays zero.
   BondShadows bond_shadows;
-  case_file::ImpactMetrics impact_metrics;
 
-  double time = 0.0;
-  double dt = 0.0;
-  long step = 0;
-  double max_signal_speed = 0.0;  // max over points of c + |v| after the last stress update
-  double mass_floor = 0.0;        // nodes lighter than this carry no velocity, kg
+  double mass_floor = 0.0;  // nodes lighter than this carry no velocity, kg
   // solver.heat_conduction, and the largest thermal diffusivity k / (rho C_p) of the bodies, m^2/s
   // (the conduction's time-step limit, mpm/stepper.hpp).
   bool heat_conduction = false;
   double max_diffusivity = 0.0;
-  Fault fault;
   std::size_t departing = 0;  // points that left the grid in this step (mpm/departures.hpp)
 };
 

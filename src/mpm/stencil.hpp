@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "bodies/points.hpp"
 #include "mpm/grid.hpp"
-#include "mpm/points.hpp"
 #include "mpm/shape_functions.hpp"
 
 namespace coldspray::mpm {
@@ -20,7 +20,7 @@ struct Stencil {
   Weights1D<S> wx, wy, wz;
 
   // The weights at point p: its position and GIMP half-widths.
-  void evaluate(const GridLayout& g, const Points& P, std::size_t p) {
+  void evaluate(const GridLayout& g, const bodies::Points& P, std::size_t p) {
     const double inv_h = 1.0 / g.h;
     // A domain wider than a cell would reach past the 3-node support: capped at h/2.
     auto a = [&](int d) { return std::min(P.half_width[d][p] * inv_h, 0.5); };

@@ -122,7 +122,7 @@ namespace {
 template <class Shape, bool Axisymmetric>
 void musl_to_contact(State& s) {
   const int bodies = static_cast<int>(s.bodies.size());
-  for (auto& i : s.contact_result.impulse) i = {0.0, 0.0, 0.0};
+  for (auto& i : s.contact_impulse) i = {0.0, 0.0, 0.0};
   bin_points_into_blocks(s);
   s.grid.clear();
   apply_absorbing_dashpots(s);                          // external force, eq 3.46
@@ -140,7 +140,7 @@ template <class Shape, bool Axisymmetric>
 void musl_from_contact(State& s) {
   const int bodies = static_cast<int>(s.bodies.size());
   resolve_contact(s.contact, s.contact_rule, s.dt, bodies,  // steps 4-6, eqs 3.29, 3.31
-                  s.contact_result);
+                  s.contact_impulse);
   mark_touching_points<Shape, Axisymmetric>(s);               //   the bonding set S (§4.1.1)
   apply_node_constraints(s, /*force_too=*/true);              //   held nodes stay held
   compute_nodal_velocities(s, /*with_forces=*/true);          //   v = p/m, dv = f dt/m

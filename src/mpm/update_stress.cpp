@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bodies/material_state.hpp"
 #include "bonding/bond_law.hpp"
 #include "core/double4.hpp"
 #include "materials/model_dispatch.hpp"
 #include "materials/stress_update_lanes.hpp"
 #include "mpm/artificial_viscosity.hpp"
 #include "mpm/departures.hpp"
-#include "mpm/material_state.hpp"
 #include "mpm/phases.hpp"
 
 namespace coldspray::mpm {

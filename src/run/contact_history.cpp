@@ -9,13 +9,13 @@ namespace coldspray::run {
 ContactHistoryWriter::ContactHistoryWriter(const std::filesystem::path& path)
     : out_(path, "time,body,other,fx,fy,fz\n") {}
 
-void ContactHistoryWriter::record(const mpm::State& s) {
+void ContactHistoryWriter::record(const bodies::Bodies& s) {
   const std::size_t bodies = s.bodies.size();
   std::string rows;
   if (s.dt > 0.0)
     for (std::size_t a = 0; a < bodies; ++a)
       for (std::size_t b = a + 1; b < bodies; ++b) {
-        const auto& impulse = s.contact_result.impulse[a * bodies + b];
+        const auto& impulse = s.contact_impulse[a * bodies + b];
         if (impulse[0] == 0.0 && impulse[1] == 0.0 && impulse[2] == 0.0) continue;
         rows +=
             fmt::format("{:.10g},{},{},{:.10g},{:.10g},{:.10g}\n", s.time, s.bodies[a].name,

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
+#include "bodies/bodies.hpp"
 #include "io/appended_file.hpp"
-#include "mpm/state.hpp"
 
 namespace coldspray::run {
 
@@ -14,7 +14,7 @@ class ContactHistoryWriter {
   explicit ContactHistoryWriter(const std::filesystem::path& path);
   // Rows `time,body,other,fx,fy,fz`: the force on `body` from `other` over the last step (N),
   // for every pair (body before other in `bodies`) that exchanged momentum in it.
-  void record(const mpm::State& s);
+  void record(const bodies::Bodies& s);
 
  private:
   io::AppendedFile out_;

@@ -8,7 +8,7 @@ namespace coldspray::run {
 
 namespace {
 
-std::string header(const mpm::State& s) {
+std::string header(const bodies::Bodies& s) {
   std::string h = "time,kinetic,elastic,plastic_work,viscous,absorbed,contact,departed,total";
   for (const auto& b : s.bodies)
     for (const char* q : {"vx", "vy", "vz", "contact_fx", "contact_fy", "contact_fz", "cor",
@@ -20,7 +20,7 @@ std::string header(const mpm::State& s) {
 
 }  // namespace
 
-HistoryWriter::HistoryWriter(const mpm::State& s, const std::filesystem::path& path)
+HistoryWriter::HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path)
     : out_(path, header(s)) {}
 
 void HistoryWriter::record(double time, const metrics::EnergyBudget& e,

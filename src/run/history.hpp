@@ -3,16 +3,16 @@
 
 #include <filesystem>
 
+#include "bodies/bodies.hpp"
 #include "io/appended_file.hpp"
 #include "metrics/body_metrics.hpp"
 #include "metrics/energy.hpp"
-#include "mpm/state.hpp"
 
 namespace coldspray::run {
 
 class HistoryWriter {
  public:
-  HistoryWriter(const mpm::State& s, const std::filesystem::path& path);
+  HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path);
   void record(double time, const metrics::EnergyBudget& e,
               const std::vector<metrics::BodyMetrics>& bodies);
 

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "bodies/material_state.hpp"
 #include "materials/symmetric_tensor.hpp"
-#include "mpm/material_state.hpp"
 
 namespace coldspray::run {
 
@@ -20,8 +20,8 @@ constexpr std::array<const char*, 14> kFields = {
     "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
     "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
 
-std::size_t nearest_point(const mpm::State& s, const case_file::Vec3& x) {
-  const mpm::Points& P = s.points;
+std::size_t nearest_point(const bodies::Bodies& s, const case_file::Vec3& x) {
+  const bodies::Points& P = s.points;
   std::size_t best = 0;
   double best_d2 = std::numeric_limits<double>::max();
   for (std::size_t p = 0; p < P.size(); ++p) {
@@ -36,8 +36,9 @@ std::size_t nearest_point(const mpm::State& s, const case_file::Vec3& x) {
 }
 
 // The point's index now, if it is still on the grid: ids ascend within a body.
-std::optional<std::size_t> find_point(const mpm::State& s, std::uint16_t body, std::uint32_t id) {
-  const mpm::BodyRange& r = s.bodies[body];
+std::optional<std::size_t> find_point(const bodies::Bodies& s, std::uint16_t body,
+                                      std::uint32_t id) {
+  const bodies::BodyRange& r = s.bodies[body];
   const auto first = s.points.id.begin();
   const auto at = std::lower_bound(first + static_cast<std::ptrdiff_t>(r.begin),
                                    first + static_cast<std::ptrdiff_t>(r.end), id);
@@ -53,13 +54,13 @@ int probe_field_index(const std::string& name) {
   return -1;
 }
 
-double probe_value(const mpm::State& s, std::size_t p, int field) {
-  const mpm::Points& P = s.points;
+double probe_value(const bodies::Bodies& s, std::size_t p, int field) {
+  const bodies::Points& P = s.points;
   switch (field) {
     case 0:
-      return materials::mean_pressure(mpm::stress_at(P, p));
+      return materials::mean_pressure(bodies::stress_at(P, p));
     case 1:
-      return materials::von_mises_stress(mpm::stress_at(P, p));
+      return materials::von_mises_stress(bodies::stress_at(P, p));
     case 2:
       return s.bodies[P.body[p]].material.density / P.J[p];
     case 3:
@@ -72,7 +73,7 @@ double probe_value(const mpm::State& s, std::size_t p, int field) {
   }
 }
 
-ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm::State& s,
+ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const bodies::Bodies& s,
                          const std::filesystem::path& path) {
   if (probes.empty()) return;
   std::string header = "time";
@@ -86,7 +87,7 @@ ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm:
   out_.emplace(path, header + "\n");
 }
 
-void ProbeWriter::record(const mpm::State& s) {
+void ProbeWriter::record(const bodies::Bodies& s) {
   if (columns_.empty()) return;
   std::string row = fmt::format("{:.10g}", s.time);
   for (const Column& c : columns_) {

@@ -9,18 +9,18 @@
 #include <string>
 #include <vector>
 
+#include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "io/appended_file.hpp"
-#include "mpm/state.hpp"
 
 namespace coldspray::run {
 
 class ProbeWriter {
  public:
   // Opens path and writes the header time,NAME.FIELD,...; does nothing if there are no probes.
-  ProbeWriter(const std::vector<case_file::Probe>& probes, const mpm::State& s,
+  ProbeWriter(const std::vector<case_file::Probe>& probes, const bodies::Bodies& s,
               const std::filesystem::path& path);
-  void record(const mpm::State& s);
+  void record(const bodies::Bodies& s);
 
  private:
   // The point by its body and its index at t = 0 (Points::id), which points leaving the grid do
@@ -37,6 +37,6 @@ class ProbeWriter {
 // The value of a probe field at a point; the field names are those of docs/input-reference.md.
 // Returns -1 for an unknown name (the case parser has already rejected those).
 int probe_field_index(const std::string& name);
-double probe_value(const mpm::State& s, std::size_t p, int field);
+double probe_value(const bodies::Bodies& s, std::size_t p, int field);
 
 }  // namespace coldspray::run

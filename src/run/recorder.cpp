@@ -23,7 +23,7 @@ std::filesystem::path prepared(std::filesystem::path out, const case_file::Case&
 
 }  // namespace
 
-Recorder::Recorder(const case_file::Case& c, const mpm::State& s, std::filesystem::path out)
+Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out)
     : out_(prepared(std::move(out), c)),
       snapshot_interval_(c.output.snapshot_interval),
       history_(s, out_ / "history.csv"),
@@ -38,24 +38,24 @@ Recorder::Recorder(const case_file::Case& c, const mpm::State& s, std::filesyste
   summary_.total_energy_initial = metrics::energy_budget(s).total();
 }
 
-void Recorder::start(const mpm::State& s) {
+void Recorder::start(const bodies::Bodies& s) {
   after_step(s, /*last=*/true);  // the rows at t = 0, always
   verdict_.sample(s);            // so that a run shorter than the window is read from its start
   snapshot_due_.done(0.0);
   snapshot(s);
 }
 
-Recorder::Due Recorder::falling_due(const mpm::State& s, bool last) const {
+Recorder::Due Recorder::falling_due(const bodies::Bodies& s, bool last) const {
   return {last || history_due_.due(s.time),
           !last && snapshot_interval_ > 0.0 && snapshot_due_.due(s.time)};
 }
 
-bool Recorder::due(const mpm::State& s, bool last) const {
+bool Recorder::due(const bodies::Bodies& s, bool last) const {
   const Due d = falling_due(s, last);
   return d.rows || d.snapshot;
 }
 
-void Recorder::after_step(const mpm::State& s, bool last) {
+void Recorder::after_step(const bodies::Bodies& s, bool last) {
   const Due d = falling_due(s, last);
   if (d.rows) {
     history_due_.done(s.time);
@@ -77,13 +77,13 @@ void Recorder::after_step(const mpm::State& s, bool last) {
   }
 }
 
-void Recorder::snapshot(const mpm::State& s) {
+void Recorder::snapshot(const bodies::Bodies& s) {
   const std::string name = fmt::format("snapshots/step_{:08d}.vtu", s.step);
   write_snapshot(s, out_ / name);
   pvd_.add(s.time, name);
 }
 
-Summary Recorder::finish(const mpm::State& s, const std::string& status) {
+Summary Recorder::finish(const bodies::Bodies& s, const std::string& status) {
   snapshot(s);
   summary_.status = status;
   summary_.steps = s.step;

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
+#include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "io/vtu.hpp"
-#include "mpm/state.hpp"
 #include "run/contact_history.hpp"
 #include "run/history.hpp"
 #include "run/probes.hpp"
@@ -24,19 +24,21 @@ class Recorder {
  public:
   // Creates the folder and writes case.resolved.yaml and the tables' headers; `s` is the state
   // at t = 0.
-  Recorder(const case_file::Case& c, const mpm::State& s, std::filesystem::path out);
+  Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out);
 
   // At t = 0: the first rows and the first snapshot.
-  void start(const mpm::State& s);
+  void start(const bodies::Bodies& s);
   // Whether rows or a snapshot fall due after the step that ended at s.time.
-  bool due(const mpm::State& s, bool last) const;
+  bool due(const bodies::Bodies& s, bool last) const;
   // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
   // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
-  void after_step(const mpm::State& s, bool last);
+  void after_step(const bodies::Bodies& s, bool last);
   // The verdict's series: whether a sample falls due after the step that ended at s.time under
   // `rule`'s end, and taking it.
-  bool sample_due(const mpm::State& s, const StepRule& rule) const { return verdict_.due(s, rule); }
-  void sample(const mpm::State& s) { verdict_.sample(s); }
+  bool sample_due(const bodies::Bodies& s, const StepRule& rule) const {
+    return verdict_.due(s, rule);
+  }
+  void sample(const bodies::Bodies& s) { verdict_.sample(s); }
   // Whether the verdict, were the run to end now, is undecided; and that the run was extended by
   // a window because it was.
   bool undecided() const { return verdict_.undecided(); }
@@ -45,7 +47,7 @@ class Recorder {
   void add_wall(double seconds) { summary_.wall_seconds += seconds; }
   void add_shared_step() { ++summary_.shared_steps; }
   // The last snapshot, and summary.json with `status` ("ok" or "fault: ...").
-  Summary finish(const mpm::State& s, const std::string& status);
+  Summary finish(const bodies::Bodies& s, const std::string& status);
 
   const std::filesystem::path& folder() const { return out_; }
 
@@ -54,8 +56,8 @@ class Recorder {
   struct Due {
     bool rows, snapshot;
   };
-  Due falling_due(const mpm::State& s, bool last) const;
-  void snapshot(const mpm::State& s);
+  Due falling_due(const bodies::Bodies& s, bool last) const;
+  void snapshot(const bodies::Bodies& s);
 
   std::filesystem::path out_;
   double snapshot_interval_;

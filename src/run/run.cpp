@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "core/error.hpp"
-#include "mpm/setup.hpp"
 #include "mpm/stepper.hpp"
 
 namespace coldspray::run {
@@ -19,7 +18,7 @@ using Clock = std::chrono::steady_clock;
 class Progress {
  public:
   explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
-  void report(const mpm::State& s, double end, double wall, bool last) {
+  void report(const bodies::Bodies& s, double end, double wall, bool last) {
     if (!enabled_) return;
     const double interval = tty_ ? 0.5 : 10.0;
     if (!last && wall - last_wall_ < interval) return;
@@ -36,19 +35,32 @@ class Progress {
   double last_wall_ = -1e30;
 };
 
+// One step of the MPM: from its start, or from the contact decision of a copied run.
+void advance(mpm::State& s, const StepRule& rule, ResumeAt resume) {
+  if (resume == ResumeAt::StepStart) {
+    s.dt = rule.next_dt(s);
+    mpm::step_to_contact(s);
+  }
+  mpm::step_from_contact(s);
+}
+
 }  // namespace
 
 Summary run_case(const case_file::Case& c, const RunOptions& options) {
-  mpm::State s = mpm::build_state(c);  // InputError before anything is written
-  const auto begin = Clock::now();
-  Recorder rec(c, s, options.out_dir);
-  rec.start(s);
-  rec.add_wall(std::chrono::duration<double>(Clock::now() - begin).count());
-  return run_to_end(s, StepRule(c, s), rec, options.progress);
+  SolverState state = build_solver_state(c);  // InputError before anything is written
+  return std::visit(
+      [&](auto& s) {
+        const auto begin = Clock::now();
+        Recorder rec(c, s, options.out_dir);
+        rec.start(s);
+        rec.add_wall(std::chrono::duration<double>(Clock::now() - begin).count());
+        return run_to_end(s, StepRule(c, s), rec, options.progress);
+      },
+      state);
 }
 
-Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress_line,
-                   ResumeAt resume) {
+template <class State>
+Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, ResumeAt resume) {
   Progress progress(progress_line);
   const auto start = Clock::now();
   auto wall = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -60,12 +72,8 @@ Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress_li
   };
   try {
     while (!rule.finished(s)) {
-      if (resume == ResumeAt::StepStart) {
-        s.dt = rule.next_dt(s);
-        mpm::step_to_contact(s);
-      }
+      advance(s, rule, resume);
       resume = ResumeAt::StepStart;
-      mpm::step_from_contact(s);
       if (rec.sample_due(s, rule)) rec.sample(s);
       if (rule.finished(s) && rec.undecided() && rule.extend()) rec.add_extension();
       const bool last = rule.finished(s);
@@ -82,5 +90,7 @@ Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress_li
   account();
   return rec.finish(s, "ok");
 }
+
+template Summary run_to_end(mpm::State&, StepRule, Recorder&, bool, ResumeAt);
 
 }  // namespace coldspray::run

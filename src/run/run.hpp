@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "case/case.hpp"
-#include "mpm/state.hpp"
 #include "run/recorder.hpp"
+#include "run/solver.hpp"
 #include "run/step_rule.hpp"
 #include "run/summary.hpp"
 
@@ -22,15 +22,16 @@ struct RunOptions {
 // a last snapshot and a summary with the fault as status, then throws RunFault.
 Summary run_case(const case_file::Case& c, const RunOptions& options);
 
-// Where a run picks up: at the start of a step, or halfway through one, at the contact decision
-// (mpm::step_from_contact next), as a bond family's branch does.
+// Where a run picks up: at the start of a step, or, in MPM, halfway through one, at the contact
+// decision (mpm::step_from_contact next), as a bond family's branch does.
 enum class ResumeAt { StepStart, Contact };
 
-// run_case's loop: steps `s` to the rule's end time, recording each step in `rec`, extending the
-// run by a verdict window while the verdict is undecided and the rule allows (docs/bonding.md),
-// then writes the last snapshot and the summary. On a fault, the same with the fault as status,
-// then throws RunFault naming the folder.
-Summary run_to_end(mpm::State& s, StepRule rule, Recorder& rec, bool progress,
+// run_case's loop, for the state of any solver (run/solver.hpp): steps `s` to the rule's end
+// time, recording each step in `rec`, extending the run by a verdict window while the verdict is
+// undecided and the rule allows (docs/bonding.md), then writes the last snapshot and the summary.
+// On a fault, the same with the fault as status, then throws RunFault naming the folder.
+template <class State>
+Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress,
                    ResumeAt resume = ResumeAt::StepStart);
 
 }  // namespace coldspray::run

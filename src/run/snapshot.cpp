@@ -1,20 +1,20 @@
 #include "run/snapshot.hpp"
 
+#include "bodies/material_state.hpp"
 #include "io/vtu.hpp"
 #include "materials/symmetric_tensor.hpp"
-#include "mpm/material_state.hpp"
 
 namespace coldspray::run {
 
-void write_snapshot(const mpm::State& s, const std::filesystem::path& path) {
-  const mpm::Points& P = s.points;
+void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path) {
+  const bodies::Points& P = s.points;
   const std::size_t n = P.size();
   std::vector<std::int32_t> body(n), bonded_to(n);
   std::vector<double> pressure(n), von_mises(n), density(n);
   for (std::size_t p = 0; p < n; ++p) {
     body[p] = P.body[p];
     bonded_to[p] = static_cast<std::int32_t>(P.bonded_to[p]) - 1;  // -1: not bonded
-    const materials::SymmetricTensor sigma = mpm::stress_at(P, p);
+    const materials::SymmetricTensor sigma = bodies::stress_at(P, p);
     pressure[p] = materials::mean_pressure(sigma);
     von_mises[p] = materials::von_mises_stress(sigma);
     density[p] = s.bodies[P.body[p]].material.density / P.J[p];

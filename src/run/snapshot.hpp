@@ -5,10 +5,10 @@
 
 #include <filesystem>
 
-#include "mpm/state.hpp"
+#include "bodies/bodies.hpp"
 
 namespace coldspray::run {
 
-void write_snapshot(const mpm::State& s, const std::filesystem::path& path);
+void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path);
 
 }  // namespace coldspray::run

@@ -5,28 +5,33 @@
 
 #include <algorithm>
 
+#include "bodies/bodies.hpp"
 #include "case/case.hpp"
-#include "mpm/state.hpp"
-#include "mpm/stepper.hpp"
 
 namespace coldspray::run {
 
+// Whichever the solver: its state `s` has a stable_time_step(s, cfl) beside it (found by
+// argument-dependent lookup, as mpm::stable_time_step), the CFL bound for its wave speeds.
 struct StepRule {
-  // From the case and the state at t = 0: solver.dt_scale fixes dt at that fraction of h / c of
-  // the undeformed materials (the thesis' scaling of the critical step, §5.1.4); otherwise dt
-  // follows the CFL bound every step.
-  StepRule(const case_file::Case& c, const mpm::State& s)
+  // From the case and the stable step of the undeformed materials (at cfl 1): solver.dt_scale
+  // fixes dt at that fraction of it (the thesis' scaling of the critical step, §5.1.4);
+  // otherwise dt follows the CFL bound every step.
+  StepRule(const case_file::Case& c, double undeformed_step)
       : end(c.solver.end_time),
         cfl(c.solver.cfl),
-        fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * mpm::stable_time_step(s, 1.0) : 0.0),
+        fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * undeformed_step : 0.0),
         window(c.metrics.verdict_window),
         extensions_left(c.metrics.verdict_extensions) {}
+  // The same from a solver's state at t = 0.
+  template <class State>
+  StepRule(const case_file::Case& c, const State& s) : StepRule(c, stable_time_step(s, 1.0)) {}
 
   // The next step's dt, the last one shortened to land on the end time.
-  double next_dt(const mpm::State& s) const {
-    return std::min(fixed_dt > 0.0 ? fixed_dt : mpm::stable_time_step(s, cfl), end - s.time);
+  template <class State>
+  double next_dt(const State& s) const {
+    return std::min(fixed_dt > 0.0 ? fixed_dt : stable_time_step(s, cfl), end - s.time);
   }
-  bool finished(const mpm::State& s) const { return s.time >= end * (1.0 - 1e-12); }
+  bool finished(const bodies::Bodies& s) const { return s.time >= end * (1.0 - 1e-12); }
   // Moves the end one verdict window later, if an extension is left; returns whether it did.
   bool extend() {
     if (extensions_left <= 0) return false;

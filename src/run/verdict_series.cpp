@@ -4,8 +4,8 @@
 
 namespace coldspray::run {
 
-VerdictSeries::VerdictSeries(const case_file::ImpactMetrics& m, const mpm::State& s)
-    : rule_{m.verdict_window, m.bonded_separation_speed, s.contact_rule.bonding},
+VerdictSeries::VerdictSeries(const case_file::ImpactMetrics& m, const bodies::Bodies& s)
+    : rule_{m.verdict_window, m.bonded_separation_speed, s.bonding},
       interval_(m.verdict_window / kSamplesPerWindow),
       bodies_(s.bodies.size()),
       // The window's samples and those of the steps before it that due() takes (at most
@@ -25,7 +25,7 @@ VerdictSeries::VerdictSeries(const case_file::ImpactMetrics& m, const mpm::State
   ring_.resize(capacity_ * moving_.size());
 }
 
-bool VerdictSeries::due(const mpm::State& s, const StepRule& rule) const {
+bool VerdictSeries::due(const bodies::Bodies& s, const StepRule& rule) const {
   // From a step or two before the window on (dt changes little from one step to the next), so
   // that a sample precedes its start.
   const double from = rule.end - rule_.window - 2.0 * (interval_ + s.dt);
@@ -44,7 +44,7 @@ double rest_velocity(const metrics::RestAndBond& r) {
 
 }  // namespace
 
-void VerdictSeries::sample(const mpm::State& s) {
+void VerdictSeries::sample(const bodies::Bodies& s) {
   schedule_.done(s.time);
   // The substrate's velocity, its bodies together, without the jetting of its crater's rim.
   metrics::RestAndBond substrate;

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "metrics/verdict.hpp"
-#include "mpm/state.hpp"
 #include "run/schedule.hpp"
 #include "run/step_rule.hpp"
 
@@ -25,11 +25,11 @@ class VerdictSeries {
  public:
   // The moving bodies of `s` (the state at t = 0) and the substrate they separate from: the
   // bodies at rest in z then.
-  VerdictSeries(const case_file::ImpactMetrics& m, const mpm::State& s);
+  VerdictSeries(const case_file::ImpactMetrics& m, const bodies::Bodies& s);
 
   // Whether a sample falls due after the step that ended at s.time, under `rule`'s end.
-  bool due(const mpm::State& s, const StepRule& rule) const;
-  void sample(const mpm::State& s);
+  bool due(const bodies::Bodies& s, const StepRule& rule) const;
+  void sample(const bodies::Bodies& s);
 
   // Per body of the state: the verdict on its series if it moved in z at t = 0, else nullopt.
   std::vector<std::optional<metrics::Verdict>> verdicts() const;

@@ -13,12 +13,12 @@ namespace coldspray::metrics {
 namespace {
 
 // Six equal points of one 3D body that came down at 800 m/s, set by hand.
-mpm::State six_points() {
-  mpm::State s;
+bodies::Bodies six_points() {
+  bodies::Bodies s;
   s.geometry = case_file::Geometry::ThreeD;
-  mpm::Points& P = s.points;
+  bodies::Points& P = s.points;
   P.resize(6);
-  mpm::BodyRange body;
+  bodies::BodyRange body;
   body.name = "particle";
   body.begin = 0;
   body.end = 6;
@@ -49,7 +49,7 @@ mpm::State six_points() {
 }
 
 TEST(ImpactMetrics, CountsByHand) {
-  const mpm::State s = six_points();
+  const bodies::Bodies s = six_points();
   const ImpactMeasures m = impact_measures(s, 0);
   // D_bond > 0 at points 0, 1, 3, 4; >= 1 at 0, 3, 4: 3 of 4.
   EXPECT_NEAR(m.pbcp, 75.0, 1e-12);
@@ -76,7 +76,7 @@ TEST(ImpactMetrics, CountsByHand) {
 // Points that left the grid (mpm/departures.hpp) count as jetted; the rest of the measures are
 // of the points on the grid.
 TEST(ImpactMetrics, PointsThatLeftTheGridCountAsJetted) {
-  mpm::State s = six_points();
+  bodies::Bodies s = six_points();
   s.bodies[0].departed.points = 2;
   s.bodies[0].departed.mass = 2e-15;
   const ImpactMeasures m = impact_measures(s, 0);
@@ -88,7 +88,7 @@ TEST(ImpactMetrics, PointsThatLeftTheGridCountAsJetted) {
 }
 
 TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
-  mpm::State s = six_points();
+  bodies::Bodies s = six_points();
   s.bodies[0].initial_velocity = {0.0, 0.0, 0.0};
   const ImpactMeasures m = impact_measures(s, 0);
   EXPECT_TRUE(std::isnan(m.cor));
@@ -98,7 +98,7 @@ TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
 // A quarter model (cut at x = 0 and y = 0): the axis is the planes' intersection, not the
 // quarter's centroid, and areas count four times.
 TEST(ImpactMetrics, AQuarterModelMeasuresTheWholeBody) {
-  mpm::State s = six_points();
+  bodies::Bodies s = six_points();
   s.bodies[0].mirror_plane = {0.0, 0.0};
   const ImpactMeasures m = impact_measures(s, 0);
   EXPECT_NEAR(m.contact_area, 4 * 5e-12, 1e-24);

@@ -12,7 +12,7 @@ namespace coldspray::mpm {
 namespace {
 
 TEST(MpmBondShadows, PointsThatLeaveTakeTheirColumnsAndTheOthersKeepTheirs) {
-  Points P;
+  bodies::Points P;
   P.resize(6);
   const std::uint8_t surface[6] = {1, 0, 1, 1, 0, 1};
   for (std::size_t p = 0; p < 6; ++p) P.surface[p] = surface[p];

@@ -15,8 +15,8 @@ constexpr double kNs = 1e-9;
 // A particle that came down, a substrate at rest, and a body that came up, three points each in
 // 3D, volume 1e-18 m^3 (area 1e-12 m^2): the third point of each moves fast (jetted), so v_rest is
 // the mean of the first two.
-mpm::State three_bodies() {
-  mpm::State s;
+bodies::Bodies three_bodies() {
+  bodies::Bodies s;
   s.geometry = case_file::Geometry::ThreeD;
   s.points.resize(9);
   const double v0[3] = {-800.0, 0.0, 800.0};
@@ -24,7 +24,7 @@ mpm::State three_bodies() {
   const double vx[9] = {0.0, 0.0, 500.0, 0.0, 0.0, 0.0, 0.0, 0.0, 500.0};
   const char* names[3] = {"particle", "substrate", "riser"};
   for (std::size_t b = 0; b < 3; ++b) {
-    mpm::BodyRange r;
+    bodies::BodyRange r;
     r.name = names[b];
     r.begin = 3 * b;
     r.end = 3 * b + 3;
@@ -41,7 +41,7 @@ mpm::State three_bodies() {
   s.points.touched[0] = 1;  // the particle's first point keeps a bond to the substrate
   s.points.bond[0] = 1.5;
   s.points.bonded_to[0] = 2;
-  s.contact_rule.bonding = true;
+  s.bonding = true;
   s.dt = 0.03 * kNs;
   return s;
 }
@@ -56,9 +56,9 @@ case_file::Case eighty_ns() {
 // left out); riser (-2 - 4) / 2 = -3 m/s. Away from the substrate: the particle +(2 - 1) = 1 m/s,
 // the riser, which came up, -(-3 - 1) = 4 m/s.
 TEST(VerdictSeries, SeparationIsFromTheSubstrateAndAway) {
-  mpm::State s = three_bodies();
+  bodies::Bodies s = three_bodies();
   const case_file::Case c = eighty_ns();
-  const StepRule rule(c, s);
+  const StepRule rule(c, /*undeformed_step=*/0.0);
   VerdictSeries series(c.metrics, s);
   // From end - window - 2 (interval + dt) = 80 - 20 - 2 (0.1 + 0.03) = 59.74 ns on.
   s.time = 59.70 * kNs;
@@ -92,10 +92,10 @@ TEST(VerdictSeries, SeparationIsFromTheSubstrateAndAway) {
 
 // A run shorter than the window is sampled from its start, and undecided.
 TEST(VerdictSeries, AShortRunIsUndecided) {
-  mpm::State s = three_bodies();
+  bodies::Bodies s = three_bodies();
   case_file::Case c = eighty_ns();
   c.solver.end_time = 10.0 * kNs;
-  const StepRule rule(c, s);
+  const StepRule rule(c, /*undeformed_step=*/0.0);
   VerdictSeries series(c.metrics, s);
   for (s.time = 0.0; s.time <= 10.0 * kNs; s.time += 0.1 * kNs) {
     EXPECT_TRUE(series.due(s, rule));

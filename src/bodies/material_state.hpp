@@ -2,10 +2,10 @@
 // materials::PointState the constitutive kernels work on.
 #pragma once
 
+#include "bodies/points.hpp"
 #include "materials/stress_update.hpp"
-#include "mpm/points.hpp"
 
-namespace coldspray::mpm {
+namespace coldspray::bodies {
 
 // Points' stress arrays and SymmetricTensor name the components in the same order.
 static_assert(materials::SymmetricTensor::index(0, 0) == kXX &&
@@ -50,4 +50,4 @@ inline void store_point_state(const materials::PointState& s, Points& P, std::si
   P.shear_modulus[p] = s.shear_modulus;
 }
 
-}  // namespace coldspray::mpm
+}  // namespace coldspray::bodies

@@ -1,9 +1,9 @@
-#include "mpm/points.hpp"
+#include "bodies/points.hpp"
 
-namespace coldspray::mpm {
+namespace coldspray::bodies {
 
 void Points::resize(std::size_t n) {
   for_each_array([n](auto& v) { v.resize(n, 0); });
 }
 
-}  // namespace coldspray::mpm
+}  // namespace coldspray::bodies

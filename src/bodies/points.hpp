@@ -1,6 +1,7 @@
-// The material points of all bodies, as structure of arrays (one array per quantity), so the
-// step's loops stream through memory. Points are stored body after body: each body's points are
-// one contiguous range, which lets the stress update dispatch on the material once per body.
+// The material points of all bodies, whichever solver moves them, as structure of arrays (one
+// array per quantity), so the step's loops stream through memory. Points are stored body after
+// body: each body's points are one contiguous range, which lets the stress update dispatch on the
+// material once per body.
 #pragma once
 
 #include <array>
@@ -8,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace coldspray::mpm {
+namespace coldspray::bodies {
 
 // Components of a symmetric tensor in the order xx, yy, zz, xy, yz, xz. In axisymmetric runs
 // x is r, y is the hoop direction theta and z the axis.
@@ -20,8 +21,8 @@ struct Points {
   std::array<std::vector<double>, 3> velocity;  // m/s
   std::vector<double> mass;                     // kg, constant
   std::vector<double> volume0;                  // m^3, reference volume (ring volume in r-z)
-  // GIMP particle half-widths along x, y, z, m: half the spacing at t = 0, then stretched with
-  // the material along each axis (the axis-aligned form of convected-domain GIMP).
+  // Half-widths along x, y, z, m: half the spacing at t = 0, then stretched with the material
+  // along each axis (MPM: the axis-aligned form of convected-domain GIMP's particle domain).
   std::array<std::vector<double>, 3> half_width;
 
   // Material state: what materials::PointState carries from step to step, spread over arrays.
@@ -83,4 +84,4 @@ struct Points {
   }
 };
 
-}  // namespace coldspray::mpm
+}  // namespace coldspray::bodies

@@ -1,13 +1,13 @@
 // Points::for_each_array is the one list of the per-point arrays: resize and the removal of points
 // go through it, so an array missing from it would keep stale values or the wrong length.
-#include "mpm/points.hpp"
+#include "bodies/points.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <vector>
 
-namespace coldspray::mpm {
+namespace coldspray::bodies {
 namespace {
 
 TEST(MpmPoints, ForEachArrayVisitsEveryArrayOnce) {
@@ -29,4 +29,4 @@ TEST(MpmPoints, ResizeSizesEveryArray) {
 }
 
 }  // namespace
-}  // namespace coldspray::mpm
+}  // namespace coldspray::bodies

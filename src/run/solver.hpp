@@ -1,0 +1,26 @@
+// The solvers a case can run on, as one variant dispatched once per run (std::visit), as the
+// material models are dispatched once per body. Each alternative is a solver's whole state, a
+// bodies::Bodies (what the recorder, the metrics and the studies read), with beside it in its
+// namespace stable_time_step(const State&, double cfl) and the step (docs/solvers.md).
+#pragma once
+
+#include <variant>
+
+#include "bodies/bodies.hpp"
+#include "case/case.hpp"
+#include "mpm/state.hpp"
+
+namespace coldspray::run {
+
+using SolverState = std::variant<mpm::State>;
+
+// The solver's state at t = 0 for the case; throws InputError before anything is written if the
+// case's geometry is invalid.
+SolverState build_solver_state(const case_file::Case& c);
+
+// The bodies of whichever solver's state.
+inline const bodies::Bodies& bodies_of(const SolverState& state) {
+  return std::visit([](const auto& s) -> const bodies::Bodies& { return s; }, state);
+}
+
+}  // namespace coldspray::run

@@ -1,0 +1,56 @@
+// The folders of src/ as layers (docs/solvers.md): a folder includes only from the folders it may
+// depend on, so that what the solvers share (bodies/, metrics/) never reaches into one solver.
+// Reads every #include "folder/..." of src/ and fails on one that crosses the layers.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+
+namespace {
+
+// What each folder may include besides itself, lowest layer first.
+const std::map<std::string, std::set<std::string>> kMayInclude = {
+    {"core", {}},
+    {"materials", {"core"}},
+    {"case", {"core", "materials"}},
+    {"geometry", {"core", "case"}},
+    {"io", {"core"}},
+    {"material_test", {"core", "materials"}},
+    {"bonding", {"core", "case", "materials"}},
+    {"bodies", {"core", "case", "materials"}},
+    {"metrics", {"core", "case", "materials", "bodies"}},
+    {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies"}},
+    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm"}},
+    {"studies", {"core", "case", "io", "run"}},
+    {"cli", {"core", "case", "io", "material_test", "mpm", "run", "studies"}},
+};
+
+TEST(Layering, EveryIncludeStaysWithinItsLayers) {
+  const std::filesystem::path src = std::filesystem::path(COLDSPRAY_SOURCE_DIR) / "src";
+  const std::regex include(R"(^\s*#include\s+"([a-z_]+)/)");
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(src)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string folder = entry.path().lexically_relative(src).begin()->string();
+    const auto allowed = kMayInclude.find(folder);
+    ASSERT_NE(allowed, kMayInclude.end()) << "src/" << folder << " has no layer in this test";
+    ++files;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      const std::string target = m[1];
+      EXPECT_TRUE(target == folder || allowed->second.count(target) != 0)
+          << entry.path().lexically_relative(src).string() << ":" << n << " includes " << target
+          << "/, outside the layers of src/" << folder << "/";
+    }
+  }
+  EXPECT_GT(files, 100);
+}
+
+}  // namespace
