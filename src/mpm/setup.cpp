@@ -6,13 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 
-#include "bodies/material_state.hpp"
+#include "bodies/seed_bodies.hpp"
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
-#include "materials/stress_update.hpp"
 #include "mpm/phases.hpp"
 #include "mpm/stencil.hpp"
 
@@ -22,42 +20,21 @@ namespace {
 
 using case_file::Vec3;
 
-// A body's diameter across the impact axis at t = 0, for the flattening ratio: the x extent of
-// its points plus one spacing, the points mirrored at a symmetry plane normal to x if it was cut
-// there (in r-z, twice the largest radius plus one spacing).
-double lateral_diameter(const std::vector<Vec3>& points, double spacing,
-                        std::optional<double> mirror_plane) {
-  double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
-  for (const Vec3& x : points) {
-    lo = std::min(lo, x[0]);
-    hi = std::max(hi, x[0]);
-  }
-  if (mirror_plane) return 2.0 * std::max(hi - *mirror_plane, *mirror_plane - lo) + spacing;
-  return hi - lo + spacing;
-}
-
 std::string body_key(const case_file::Body& b, const char* field) {
   return fmt::format("bodies.{}.{}", b.name, field);
 }
-
-struct Seeded {
-  geometry::SeededPoints points;
-  double spacing = 0.0;
-  Vec3 min, max;  // bounds of the points' domains (position +- spacing/2)
-  std::array<std::optional<double>, 2> mirror_plane;  // see BodyRange::mirror_plane
-};
 
 // Places the grid. The domain is grid.min..grid.max, or the bodies' bounds plus a margin, with
 // its faces on multiples of the cell size so that the points' lattice (anchored at 0) lines up
 // with the cells. One layer of ghost nodes lies outside every face: a GIMP support reaches a
 // node beyond the point's cell, and bodies may fill the domain up to a fixed or roller face.
 // In r-z the domain starts at the axis r = 0.
-GridLayout place_grid(const case_file::Case& c, const std::vector<Seeded>& seeded) {
+GridLayout place_grid(const case_file::Case& c, const std::vector<bodies::SeededBody>& seeded) {
   const double h = c.grid.cell_size;
   const bool axi = c.solver.geometry == case_file::Geometry::Axisymmetric;
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = -lo;
-  for (const Seeded& s : seeded) {
+  for (const bodies::SeededBody& s : seeded) {
     lo = lo.cwiseMin(s.min);
     hi = hi.cwiseMax(s.max);
   }
@@ -87,7 +64,7 @@ GridLayout place_grid(const case_file::Case& c, const std::vector<Seeded>& seede
   return g;
 }
 
-void check_inside_grid(const case_file::Case& c, const std::vector<Seeded>& seeded,
+void check_inside_grid(const case_file::Case& c, const std::vector<bodies::SeededBody>& seeded,
                        const GridLayout& g) {
   for (std::size_t b = 0; b < seeded.size(); ++b)
     for (int d = 0; d < 3; ++d) {
@@ -105,9 +82,9 @@ void check_inside_grid(const case_file::Case& c, const std::vector<Seeded>& seed
 // A body may cross a fixed or roller face of the grid: such a face is a symmetry plane (a
 // quarter of a Taylor bar, half of a plate) and the body is cut there.
 void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
-                            std::vector<Seeded>& seeded) {
+                            std::vector<bodies::SeededBody>& seeded) {
   for (std::size_t b = 0; b < seeded.size(); ++b) {
-    Seeded& sd = seeded[b];
+    bodies::SeededBody& sd = seeded[b];
     geometry::SeededPoints kept;
     for (std::size_t i = 0; i < sd.points.position.size(); ++i) {
       const Vec3& x = sd.points.position[i];
@@ -131,25 +108,8 @@ void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
       throw InputError(c.source_file, body_key(c.bodies[b], "shape"),
                        fmt::format("body '{}' lies outside the grid", c.bodies[b].name));
     sd.points = std::move(kept);
-    sd.min = Vec3::Constant(std::numeric_limits<double>::max());
-    sd.max = -sd.min;
-    for (const Vec3& x : sd.points.position) {
-      sd.min = sd.min.cwiseMin(x - Vec3::Constant(0.5 * sd.spacing));
-      sd.max = sd.max.cwiseMax(x + Vec3::Constant(0.5 * sd.spacing));
-    }
+    sd.bound();
   }
-}
-
-void check_no_overlap(const case_file::Case& c, const std::vector<Seeded>& seeded) {
-  for (std::size_t a = 0; a < seeded.size(); ++a)
-    for (std::size_t b = 0; b < seeded.size(); ++b) {
-      if (a == b) continue;
-      for (const Vec3& x : seeded[a].points.position)
-        if (geometry::contains(c.bodies[b].shape, x))
-          throw InputError(c.source_file, body_key(c.bodies[a], "shape"),
-                           fmt::format("body '{}' overlaps body '{}' at t = 0", c.bodies[a].name,
-                                       c.bodies[b].name));
-    }
 }
 
 // The holds of the grid faces, on the face's node layer and the ghost layer beyond it, and in
@@ -179,26 +139,6 @@ void constrain_grid_faces(const case_file::Case& c, State& s) {
       for (int i = 0; i <= 1; ++i) s.constraint[L.index(i, 0, k)] |= kHoldX;
 }
 
-// OutsideNeighbour bits that make a point part of a named face.
-std::uint8_t face_bits(case_file::BodyFace f) {
-  using namespace geometry;
-  switch (f) {
-    case case_file::BodyFace::Bottom:
-      return kMinusZ;
-    case case_file::BodyFace::Top:
-      return kPlusZ;
-    case case_file::BodyFace::Side:
-      return kMinusX | kPlusX | kMinusY | kPlusY;
-  }
-  return 0;
-}
-
-std::uint8_t faces_bits(const std::vector<case_file::BodyFace>& faces) {
-  std::uint8_t bits = 0;
-  for (auto f : faces) bits |= face_bits(f);
-  return bits;
-}
-
 // Fixed faces hold every node the face's points reach.
 template <class Shape, bool Axisymmetric>
 void hold_nodes_of_point(State& s, std::size_t p) {
@@ -219,93 +159,20 @@ void hold_fixed_point(State& s, std::size_t p) {
         : hold_nodes_of_point<LinearShape, false>(s, p);
 }
 
-// Eqs 3.45-3.46 with a = b = 1: along the face normal a dashpot rho c_p per unit area, along
-// the face's tangents rho c_s. A point with outside neighbours along several axes (an edge)
-// adds up one face area per such neighbour.
-AbsorbingPoint absorbing_point(const BodyRange& body, std::size_t p, const Points& P,
-                               std::uint8_t outside, bool axi) {
-  const materials::Material& m = body.material;
-  const double rho = m.density, G = m.elastic.shear_modulus, K = m.elastic.bulk_modulus;
-  const double cp = std::sqrt((K + 4.0 / 3.0 * G) / rho), cs = std::sqrt(G / rho);
-  const double s = body.spacing;
-  const double face_area = axi ? 2.0 * std::numbers::pi * P.position[0][p] * s : s * s;
-  double area[3] = {0, 0, 0};
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side)
-      if (outside & (1u << (2 * axis + side))) area[axis] += face_area;
-  const double total = area[0] + area[1] + area[2];
-  AbsorbingPoint a;
-  a.point = p;
-  for (int d = 0; d < 3; ++d) a.damping[d] = rho * (cp * area[d] + cs * (total - area[d]));
-  if (axi) a.damping[1] = 0.0;  // no hoop motion in r-z
-  return a;
-}
-
 }  // namespace
 
 State build_state(const case_file::Case& c) {
   State s;
-  s.geometry = c.solver.geometry;
   s.shape_function = c.solver.shape_function;
   s.viscosity = c.solver.artificial_viscosity;
-  const bool axi = c.solver.geometry == case_file::Geometry::Axisymmetric;
 
-  std::vector<Seeded> seeded;
-  for (const case_file::Body& b : c.bodies) {
-    Seeded sd;
-    sd.spacing = b.spacing;
-    sd.points = geometry::seed(b.shape, geometry::Lattice{Vec3::Zero(), b.spacing, axi});
-    if (sd.points.position.empty())
-      throw InputError(
-          c.source_file, body_key(b, "spacing"),
-          fmt::format("body '{}' has no points: its spacing is larger than its shape", b.name));
-    sd.min = Vec3::Constant(std::numeric_limits<double>::max());
-    sd.max = -sd.min;
-    for (const Vec3& x : sd.points.position) {
-      sd.min = sd.min.cwiseMin(x - Vec3::Constant(0.5 * b.spacing));
-      sd.max = sd.max.cwiseMax(x + Vec3::Constant(0.5 * b.spacing));
-    }
-    seeded.push_back(std::move(sd));
-  }
-  check_no_overlap(c, seeded);
+  std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
   s.layout = place_grid(c, seeded);
   clip_at_symmetry_faces(c, s.layout, seeded);
   check_inside_grid(c, seeded, s.layout);
-
-  std::size_t total = 0;
-  for (const Seeded& sd : seeded) total += sd.points.position.size();
-  Points& P = s.points;
-  P.resize(total);
-  std::size_t p = 0;
-  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
-    const case_file::Body& body = c.bodies[b];
-    BodyRange range{body.name, p, p + seeded[b].points.position.size(),
-                    c.materials.at(body.material), body.spacing};
-    range.initial_velocity = {body.velocity[0], body.velocity[1], body.velocity[2]};
-    range.mirror_plane = seeded[b].mirror_plane;
-    if (axi) range.mirror_plane[0] = 0.0;
-    range.initial_diameter =
-        lateral_diameter(seeded[b].points.position, body.spacing, range.mirror_plane[0]);
-    const materials::PointState initial =
-        materials::initial_state(range.material, body.temperature);
-    const double c0 = materials::wave_speed(range.material, initial);
-    for (std::size_t i = 0; i < seeded[b].points.position.size(); ++i, ++p) {
-      for (int d = 0; d < 3; ++d) {
-        P.position[d][p] = seeded[b].points.position[i][d];
-        P.velocity[d][p] = body.velocity[d];
-      }
-      P.volume0[p] = seeded[b].points.volume[i];
-      P.mass[p] = range.material.density * P.volume0[p];
-      for (int d = 0; d < 3; ++d) P.half_width[d][p] = 0.5 * body.spacing;
-      store_point_state(initial, P, p);
-      P.sound_speed[p] = c0;
-      P.body[p] = static_cast<std::uint16_t>(b);
-      P.surface[p] = seeded[b].points.outside[i] != 0;
-      P.initial_z[p] = P.position[2][p];
-      P.id[p] = static_cast<std::uint32_t>(i);
-    }
-    s.bodies.push_back(std::move(range));
-  }
+  bodies::lay_out_bodies(c, seeded, s);
+  const std::size_t total = s.points.size();
+  const Points& P = s.points;
 
   s.grid.resize(s.layout.node_count());
   s.constraint.assign(s.layout.node_count(), 0);
@@ -313,15 +180,9 @@ State build_state(const case_file::Case& c) {
   constrain_grid_faces(c, s);
   for (auto& f : s.external_force) f.assign(total, 0.0);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
-    const std::uint8_t fixed = faces_bits(c.bodies[b].fixed);
-    const std::uint8_t absorbing = faces_bits(c.bodies[b].absorbing);
-    for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i) {
-      const std::size_t q = s.bodies[b].begin + i;
-      const std::uint8_t outside = seeded[b].points.outside[i];
-      if (outside & fixed) hold_fixed_point(s, q);
-      if (outside & absorbing)
-        s.absorbing.push_back(absorbing_point(s.bodies[b], q, P, outside & absorbing, axi));
-    }
+    const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
+    for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i)
+      if (seeded[b].points.outside[i] & fixed) hold_fixed_point(s, s.bodies[b].begin + i);
   }
 
   with_discretisation(s, [&]<class Shape, bool Axisymmetric>() {
@@ -347,26 +208,16 @@ State build_state(const case_file::Case& c) {
   s.bonding = s.bond_law.enabled();
   s.contact_rule.bonding = s.bonding;
   s.contact_rule.nodal_average = c.bonding.nodal_average;
-  s.impact_metrics = c.metrics;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
     if (c.contact.normal == case_file::ContactNormal::Body &&
         c.bodies[b].name == c.contact.normal_body)
       s.contact_rule.normal_body = static_cast<int>(b);
   }
-  s.contact_impulse.assign(c.bodies.size() * c.bodies.size(), {0.0, 0.0, 0.0});
   s.contact_result.gradient_weight.assign(c.bodies.size() * c.bodies.size(), 0.0);
   s.contact_result.master.assign(c.bodies.size() * c.bodies.size(), 0);
 
-  double min_mass = std::numeric_limits<double>::max();
-  for (std::size_t q = 0; q < total; ++q) {
-    min_mass = std::min(min_mass, P.mass[q]);
-    const double speed =
-        std::sqrt(P.velocity[0][q] * P.velocity[0][q] + P.velocity[1][q] * P.velocity[1][q] +
-                  P.velocity[2][q] * P.velocity[2][q]);
-    s.max_signal_speed = std::max(s.max_signal_speed, P.sound_speed[q] + speed);
-  }
-  s.mass_floor = 1e-10 * min_mass;
+  s.mass_floor = 1e-10 * *std::min_element(P.mass.begin(), P.mass.end());
   s.heat_conduction = c.solver.heat_conduction;
   if (s.heat_conduction) {
     s.grid.heat.resize(s.layout.node_count());

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "bodies/material_state.hpp"
+#include "bodies/update_points.hpp"
 #include "bonding/bond_law.hpp"
 #include "core/double4.hpp"
 #include "materials/model_dispatch.hpp"
-#include "materials/stress_update_lanes.hpp"
 #include "mpm/artificial_viscosity.hpp"
 #include "mpm/departures.hpp"
 #include "mpm/phases.hpp"
@@ -46,19 +46,12 @@ void check_point(State& s, std::size_t p) {
   }
 }
 
-std::size_t batch_count(const BodyRange& body) {
-  return (body.end - body.begin + materials::kBatchPoints - 1) / materials::kBatchPoints;
-}
-
-// Steps 9-11 for batches [first, end) of one body (eqs 3.34-3.36, Appendix A): points that the
-// material update takes together (materials/stress_update_lanes.hpp). Batches start at fixed
-// offsets from the body's first point and a short last batch is padded with copies of its first
-// point, so a point's result depends neither on the threads nor on its neighbours. Returns the
-// largest c + |v| of the points.
+// Steps 9-11 for batches [first, end) of one body (eqs 3.34-3.36, Appendix A), through the
+// solvers' shared batch update (bodies/update_points.hpp). Returns the largest c + |v| of the
+// points.
 template <class Shape, bool Axisymmetric>
 double update_body_stress(State& s, const BodyRange& body, std::size_t first_batch,
                           std::size_t end_batch) {
-  using materials::kBatchPoints;
   Points& P = s.points;
   const double dt = s.dt;
   const int b = static_cast<int>(&body - s.bodies.data());
@@ -132,42 +125,8 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
       check_point(s, p);
     };
 
-    for (std::size_t batch = first_batch; batch < end_batch; ++batch) {
-      const std::size_t first = body.begin + batch * kBatchPoints;
-      const int count = static_cast<int>(std::min<std::size_t>(kBatchPoints, body.end - first));
-      materials::StepKinematics k[kBatchPoints];
-      materials::PointState state[kBatchPoints];
-      for (int i = 0; i < kBatchPoints; ++i) {
-        if (i < count) {
-          k[i] = kinematics_of(first + i);
-          state[i] = load_point_state(P, first + i);
-        } else {
-          k[i] = k[0];
-          state[i] = state[0];
-        }
-      }
-      materials::update_points(models, k, materials::UpdateOptions{}, state);
-      for (int i = 0; i < count; ++i) complete_point(first + i, k[i], state[i]);
-      // The wave speeds c and speeds |v|, the batch's square roots and divisions taken four at
-      // once (the padding lanes repeat the first point).
-      double modulus[kBatchPoints], J[kBatchPoints], v2[kBatchPoints];
-      for (int i = 0; i < kBatchPoints; ++i) {
-        const std::size_t p = first + (i < count ? i : 0);
-        modulus[i] = materials::longitudinal_modulus(models, state[i]);
-        J[i] = state[i].J;
-        v2[i] = P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
-                P.velocity[2][p] * P.velocity[2][p];
-      }
-      double c[kBatchPoints], speed[kBatchPoints];
-      for (int i = 0; i < kBatchPoints; ++i) {
-        c[i] = materials::wave_speed_of(modulus[i], models.material.density, J[i]);
-        speed[i] = std::sqrt(v2[i]);
-      }
-      for (int i = 0; i < count; ++i) {
-        P.sound_speed[first + i] = c[i];
-        max_speed = std::max(max_speed, c[i] + speed[i]);
-      }
-    }
+    max_speed = bodies::update_batches(models, P, body, first_batch, end_batch, kinematics_of,
+                                       complete_point);
   });
   return max_speed;
 }
@@ -179,7 +138,7 @@ double update_stress_share(State& s, std::size_t first, std::size_t end) {
   double max_speed = 0.0;
   std::size_t offset = 0;  // the body's first batch in the step's sequence
   for (const BodyRange& body : s.bodies) {
-    const std::size_t batches = batch_count(body);
+    const std::size_t batches = bodies::batch_count(body);
     const std::size_t lo = std::max(first, offset), hi = std::min(end, offset + batches);
     if (lo < hi)
       max_speed = std::max(
@@ -191,7 +150,7 @@ double update_stress_share(State& s, std::size_t first, std::size_t end) {
 
 std::size_t stress_batch_count(const State& s) {
   std::size_t batches = 0;
-  for (const BodyRange& body : s.bodies) batches += batch_count(body);
+  for (const BodyRange& body : s.bodies) batches += bodies::batch_count(body);
   return batches;
 }
 

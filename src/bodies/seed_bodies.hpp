@@ -1,0 +1,39 @@
+// Turning a case's bodies into points, the same for every solver: each body's shape seeded on
+// its lattice (geometry/seeding.hpp), checked for overlaps, then laid out body after body in
+// bodies::Points with the initial material state, and the points of absorbing faces found.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "bodies/bodies.hpp"
+#include "case/case.hpp"
+#include "geometry/seeding.hpp"
+
+namespace coldspray::bodies {
+
+struct SeededBody {
+  geometry::SeededPoints points;
+  double spacing = 0.0;
+  case_file::Vec3 min, max;  // bounds of the points' domains (position +- spacing/2)
+  std::array<std::optional<double>, 2> mirror_plane;  // see BodyRange::mirror_plane
+
+  // min and max from the points.
+  void bound();
+};
+
+// Seeds every body of the case; throws InputError for a body with no points or bodies that
+// overlap at t = 0.
+std::vector<SeededBody> seed_bodies(const case_file::Case& c);
+
+// Fills s.geometry, s.points, s.bodies, s.absorbing, s.contact_impulse and s.impact_metrics
+// from the case and its seeded bodies (which a solver may have cut at its symmetry planes,
+// setting their mirror planes), and s.max_signal_speed at t = 0.
+void lay_out_bodies(const case_file::Case& c, const std::vector<SeededBody>& seeded, Bodies& s);
+
+// OutsideNeighbour bits (geometry/seeding.hpp) that make a point part of the named faces.
+std::uint8_t faces_bits(const std::vector<case_file::BodyFace>& faces);
+
+}  // namespace coldspray::bodies
