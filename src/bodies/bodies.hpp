@@ -61,7 +61,24 @@ struct Fault {
   std::string cause;
 };
 
+// Records a fault at point p unless one at a lower index is recorded (safe to call from
+// threads), so the report is the same whatever the threads.
+void record_fault(Fault& fault, std::size_t p, const char* cause);
+
+struct Bodies;
+// Throws RunFault naming the body, point (its index at t = 0), position, time and cause of the
+// recorded fault, if there is one.
+void raise_recorded_fault(const Bodies& s);
+
+// Which solver moves the bodies, and its discretisation, for the summary.
+struct Discretisation {
+  std::string method;     // "mpm" or "peridynamics"
+  double length = 0.0;    // the MPM's cell size, or the smallest PD horizon, m
+  std::size_t bonds = 0;  // PD: neighbour pairs in the families (each counted from both ends)
+};
+
 struct Bodies {
+  Discretisation discretisation;
   case_file::Geometry geometry = case_file::Geometry::ThreeD;
   Points points;
   std::vector<BodyRange> bodies;

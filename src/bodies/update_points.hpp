@@ -22,9 +22,10 @@ inline std::size_t batch_count(const BodyRange& body) {
 }
 
 // Updates batches [first_batch, end_batch) of `body` with the material's models: the step's
-// kinematics of point p from kinematics_of(p), the new state stored and then handed to
-// complete_point(p, kinematics, state) (which may read the state before the step from P),
-// and each point's longitudinal wave speed into P.sound_speed. Returns the largest c + |v| of
+// kinematics of point p from kinematics_of(p), the new state handed to complete_point(p,
+// kinematics, state), which stores it (bodies/material_state.hpp) after reading what it needs of
+// the state before the step from P, and each point's longitudinal wave speed into
+// P.sound_speed. Returns the largest c + |v| of
 // the points.
 template <class Models, class KinematicsOf, class CompletePoint>
 double update_batches(const Models& models, Points& P, const BodyRange& body,

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "materials/artificial_viscosity.hpp"
 #include "materials/material.hpp"
 
 namespace coldspray::case_file {
@@ -50,6 +51,9 @@ struct Body {
   double temperature = 298.0;       // K
   std::vector<BodyFace> absorbing;  // Lysmer-Kuhlemeyer dashpots (thesis §3.5.5)
   std::vector<BodyFace> fixed;      // zero velocity
+  // Zero velocity along the face's normal: z on the bottom and top, x and y on the side (the PD
+  // paper's side condition). Peridynamics only; the MPM holds grid faces (grid.faces).
+  std::vector<BodyFace> roller;
 
   friend bool operator==(const Body&, const Body&) = default;
 };
@@ -66,17 +70,11 @@ struct Grid {
   friend bool operator==(const Grid&, const Grid&) = default;
 };
 
-enum class Method { Mpm };
+enum class Method { Mpm, Peridynamics };
 enum class Geometry { ThreeD, Axisymmetric };
 enum class ShapeFunction { Linear, Gimp };
 
-struct ArtificialViscosity {
-  bool enabled = true;
-  double linear = 0.06;    // c0 in q = rho l (c1 l (tr D)^2 - c0 c tr D)
-  double quadratic = 1.5;  // c1
-
-  friend bool operator==(const ArtificialViscosity&, const ArtificialViscosity&) = default;
-};
+using materials::ArtificialViscosity;
 
 struct Solver {
   Method method = Method::Mpm;
@@ -141,6 +139,25 @@ struct ImpactMetrics {
   friend bool operator==(const ImpactMetrics&, const ImpactMetrics&) = default;
 };
 
+// How strongly a bond of the family counts in the shape tensor and the force state (PD paper
+// eqs 5-7): omega = 1, or omega = delta / |xi|.
+enum class Influence { Constant, InverseDistance };
+
+// The correspondence peridynamics solver (solver.method: peridynamics; docs/pd.md).
+struct Peridynamics {
+  double horizon_factor = 3.0;  // delta = horizon_factor x the body's spacing (PD paper: 3)
+  Influence influence = Influence::Constant;
+  // G_s of the zero-energy-mode control (Silling 2017): the penalty on the non-uniform part of a
+  // bond's deformation, in units of the bond micromodulus 18 K / (pi delta^4).
+  double stabilization = 0.1;
+  // Points of different bodies closer than contact_distance x spacing repel with the short-range
+  // force of contact_stiffness x the micromodulus (Parks et al. 2008, as LAMMPS's PERI package).
+  double contact_distance = 0.9;
+  double contact_stiffness = 15.0;
+
+  friend bool operator==(const Peridynamics&, const Peridynamics&) = default;
+};
+
 struct Probe {
   std::string name;
   Vec3 position = Vec3::Zero();
@@ -164,8 +181,12 @@ struct Case {
   // Materials the bodies use, resolved (built-in, or user-defined with an optional base).
   std::map<std::string, materials::Material> materials;
   std::vector<Body> bodies;
-  Grid grid;
+  // Each solver's own section: both may be given, so that one case runs on either solver
+  // (solver.method picks); the chosen solver's is required (the grid) or defaulted (peridynamics,
+  // by load_case), the other is not used.
+  std::optional<Grid> grid;
   Solver solver;
+  std::optional<Peridynamics> peridynamics;
   Contact contact;
   Bonding bonding;
   ImpactMetrics metrics;

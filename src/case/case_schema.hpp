@@ -33,7 +33,11 @@ inline constexpr Names<FaceCondition, 3> kFaceConditionNames{{{{"free", FaceCond
                                                                {"fixed", FaceCondition::Fixed},
                                                                {"roller", FaceCondition::Roller}}}};
 
-inline constexpr Names<Method, 1> kMethodNames{{{{"mpm", Method::Mpm}}}};
+inline constexpr Names<Method, 2> kMethodNames{
+    {{{"mpm", Method::Mpm}, {"peridynamics", Method::Peridynamics}}}};
+
+inline constexpr Names<Influence, 2> kInfluenceNames{
+    {{{"constant", Influence::Constant}, {"inverse_distance", Influence::InverseDistance}}}};
 
 inline constexpr Names<Geometry, 2> kGeometryNames{
     {{{"3d", Geometry::ThreeD}, {"axisymmetric", Geometry::Axisymmetric}}}};
@@ -93,6 +97,7 @@ void fields(IO& io, Body& b) {
   io.quantity("temperature", b.temperature, units::kTemperature, kOptional, kPositive);
   io.scalars("absorbing", b.absorbing, kBodyFaceNames, kOptional);
   io.scalars("fixed", b.fixed, kBodyFaceNames, kOptional);
+  io.scalars("roller", b.roller, kBodyFaceNames, kOptional);
 }
 
 template <class IO>
@@ -156,6 +161,17 @@ void fields(IO& io, ImpactMetrics& m) {
 }
 
 template <class IO>
+void fields(IO& io, Peridynamics& p) {
+  io.quantity("horizon_factor", p.horizon_factor, units::kDimensionless, kOptional,
+              Range{2.0, 6.0, false, false});
+  io.scalar("influence", p.influence, kInfluenceNames, kOptional);
+  io.quantity("stabilization", p.stabilization, units::kDimensionless, kOptional, kNonNegative);
+  io.quantity("contact_distance", p.contact_distance, units::kDimensionless, kOptional, kFraction);
+  io.quantity("contact_stiffness", p.contact_stiffness, units::kDimensionless, kOptional,
+              kNonNegative);
+}
+
+template <class IO>
 void fields(IO& io, Probe& p) {
   io.scalar("name", p.name, Text{}, kRequired);
   io.vector("position", p.position, units::kLength, kRequired);
@@ -179,8 +195,10 @@ void fields(IO& io, Case& c) {
   io.materials("materials", c.materials);
   io.list("bodies", c.bodies, kRequired);
   io.check(!c.bodies.empty(), "bodies", "needs at least one body");
-  io.section("grid", c.grid, kRequired);
+  // Required by the MPM: case/validate.cpp, which knows the solver.
+  io.section("grid", c.grid, kOptional);
   io.section("solver", c.solver, kRequired);
+  io.section("peridynamics", c.peridynamics, kOptional);
   io.section("contact", c.contact, kOptional);
   io.section("bonding", c.bonding, kOptional);
   io.section("metrics", c.metrics, kOptional);

@@ -24,6 +24,7 @@ Case read_case(Document& doc, const std::vector<Override>& overrides) {
   Reader::read(doc, doc.root(), "", c);
   c.source_file = doc.name();
   resolve_body_materials(doc, c);
+  if (c.solver.method == Method::Peridynamics && !c.peridynamics) c.peridynamics.emplace();
   check_consistency(doc, c);
   return c;
 }

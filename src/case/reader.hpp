@@ -113,6 +113,15 @@ class Reader {
     }
   }
 
+  // An optional nested map: present once given (or once the base had it).
+  template <class T>
+  void section(std::string_view key, std::optional<T>& value, Presence presence) {
+    if (const Entry* e = find(key, presence)) {
+      if (!value) value.emplace();
+      read(doc_, map_node(*e), path_of(key), *value, overlay_);
+    }
+  }
+
   // A nested map given either by T's keys or by Alternative's, which converts to T.
   template <class T, class Alternative>
   void section_either(std::string_view key, T& value, Presence presence,

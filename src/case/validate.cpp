@@ -28,11 +28,32 @@ void check_contact_body(const Document& doc, const Case& c) {
   fail(doc, {"contact", "normal"}, unknown_word("body", c.contact.normal_body, names));
 }
 
-void check_spacing(const Document& doc, const Case& c, const Body& b) {
-  if (b.spacing <= c.grid.cell_size) return;
+void check_spacing(const Document& doc, const Grid& grid, const Body& b) {
+  if (b.spacing <= grid.cell_size) return;
   fail(doc, {"bodies", b.name, "spacing"},
        "must not exceed grid.cell_size (" + shortest_text(b.spacing) + " m > " +
-           shortest_text(c.grid.cell_size) + " m)");
+           shortest_text(grid.cell_size) + " m)");
+}
+
+// The MPM needs its grid; PD runs in 3D (its families and contact are three-dimensional).
+void check_solver_sections(const Document& doc, const Case& c) {
+  switch (c.solver.method) {
+    case Method::Mpm:
+      if (!c.grid) fail(doc, {"grid"}, "missing: solver.method mpm needs a grid (grid.cell_size)");
+      for (const Body& b : c.bodies)
+        if (!b.roller.empty())
+          fail(doc, {"bodies", b.name, "roller"},
+               "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
+      return;
+    case Method::Peridynamics:
+      if (c.solver.geometry != Geometry::ThreeD)
+        fail(doc, {"solver", "geometry"},
+             "must be 3d with solver.method peridynamics (axisymmetric is MPM only)");
+      if (c.bonding.model != BondingModel::None)
+        fail(doc, {"bonding", "model"},
+             "must be none with solver.method peridynamics (the direct bonding model is MPM's)");
+      return;
+  }
 }
 
 bool on_z_axis(const Vec3& v) { return v.x() == 0.0 && v.y() == 0.0; }
@@ -61,11 +82,12 @@ void check_axisymmetric(const Document& doc, const Body& b) {
 
 void check_consistency(const Document& doc, const Case& c) {
   check_contact_body(doc, c);
-  if (c.solver.geometry == Geometry::ThreeD && c.grid.min && c.grid.max &&
-      (*c.grid.min)[1] >= (*c.grid.max)[1])
+  check_solver_sections(doc, c);
+  if (c.solver.geometry == Geometry::ThreeD && c.grid && c.grid->min && c.grid->max &&
+      (*c.grid->min)[1] >= (*c.grid->max)[1])
     fail(doc, {"grid", "max"}, "must be greater than min in y in 3D geometry");
   for (const Body& b : c.bodies) {
-    check_spacing(doc, c, b);
+    if (c.solver.method == Method::Mpm) check_spacing(doc, *c.grid, b);
     if (c.solver.geometry == Geometry::Axisymmetric) check_axisymmetric(doc, b);
   }
 }

@@ -73,6 +73,11 @@ class Writer {
     out_ << YAML::EndMap;
   }
 
+  template <class T>
+  void section(std::string_view key, std::optional<T>& value, Presence presence) {
+    if (value) section(key, *value, presence);
+  }
+
   // Always written in T's own form.
   template <class T, class Alternative>
   void section_either(std::string_view key, T& value, Presence presence,

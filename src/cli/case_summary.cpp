@@ -46,7 +46,11 @@ void print_case_summary(const case_file::Case& c, std::ostream& out) {
     out << fmt::format("  body '{}': {}, material {}, spacing {:.4g} um, ~{:.3g} points\n", b.name,
                        shape.text, b.material, b.spacing * 1e6, points);
   }
-  out << fmt::format("  grid cell {:.4g} um\n", c.grid.cell_size * 1e6);
+  if (c.solver.method == case_file::Method::Peridynamics)
+    out << fmt::format("  peridynamics, horizon {:.4g} x spacing\n",
+                       c.peridynamics->horizon_factor);
+  else
+    out << fmt::format("  MPM, grid cell {:.4g} um\n", c.grid->cell_size * 1e6);
 }
 
 }  // namespace coldspray::cli

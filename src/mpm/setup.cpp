@@ -30,7 +30,7 @@ std::string body_key(const case_file::Body& b, const char* field) {
 // node beyond the point's cell, and bodies may fill the domain up to a fixed or roller face.
 // In r-z the domain starts at the axis r = 0.
 GridLayout place_grid(const case_file::Case& c, const std::vector<bodies::SeededBody>& seeded) {
-  const double h = c.grid.cell_size;
+  const double h = c.grid->cell_size;
   const bool axi = c.solver.geometry == case_file::Geometry::Axisymmetric;
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = -lo;
@@ -38,9 +38,9 @@ GridLayout place_grid(const case_file::Case& c, const std::vector<bodies::Seeded
     lo = lo.cwiseMin(s.min);
     hi = hi.cwiseMax(s.max);
   }
-  if (c.grid.min) {
-    lo = *c.grid.min;
-    hi = *c.grid.max;
+  if (c.grid->min) {
+    lo = *c.grid->min;
+    hi = *c.grid->max;
   } else {
     const Vec3 margin =
         (kGridMarginFraction * (hi - lo)).cwiseMax(Vec3::Constant(kGridMarginMinCells * h));
@@ -89,7 +89,7 @@ void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
     for (std::size_t i = 0; i < sd.points.position.size(); ++i) {
       const Vec3& x = sd.points.position[i];
       bool inside = true;
-      for (const auto& [face, condition] : c.grid.faces) {
+      for (const auto& [face, condition] : c.grid->faces) {
         if (condition == case_file::FaceCondition::Free) continue;
         const int axis = static_cast<int>(face) / 2;
         if (g.nodes[axis] == 1) continue;
@@ -116,7 +116,7 @@ void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
 // r-z the axis: no radial velocity at r <= 0.
 void constrain_grid_faces(const case_file::Case& c, State& s) {
   const GridLayout& L = s.layout;
-  for (const auto& [face, condition] : c.grid.faces) {
+  for (const auto& [face, condition] : c.grid->faces) {
     if (condition == case_file::FaceCondition::Free) continue;
     const int axis = static_cast<int>(face) / 2;
     const bool at_max = static_cast<int>(face) % 2 == 1;
@@ -171,6 +171,7 @@ State build_state(const case_file::Case& c) {
   clip_at_symmetry_faces(c, s.layout, seeded);
   check_inside_grid(c, seeded, s.layout);
   bodies::lay_out_bodies(c, seeded, s);
+  s.discretisation = {"mpm", c.grid->cell_size, 0};
   const std::size_t total = s.points.size();
   const Points& P = s.points;
 
@@ -204,7 +205,7 @@ State build_state(const case_file::Case& c) {
   s.contact_rule.normal = c.contact.normal;
   s.contact_rule.friction = c.contact.friction;
   s.contact_rule.gap_check = c.contact.gap_check;
-  s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid.cell_size);
+  s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid->cell_size);
   s.bonding = s.bond_law.enabled();
   s.contact_rule.bonding = s.bonding;
   s.contact_rule.nodal_average = c.bonding.nodal_average;

@@ -178,15 +178,7 @@ void step_to_contact(State& s) {
 void step_from_contact(State& s) {
   with_discretisation(
       s, [&]<class Shape, bool Axisymmetric>() { musl_from_contact<Shape, Axisymmetric>(s); });
-  if (s.fault.point != std::numeric_limits<std::size_t>::max()) {
-    const std::size_t p = s.fault.point;
-    const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),
-                                   [p](const BodyRange& b) { return p >= b.begin && p < b.end; });
-    throw RunFault(fmt::format(
-        "body '{}', point {} at ({:.4g}, {:.4g}, {:.4g}) um, t = {:.6g} ns: {}", body->name,
-        s.points.id[p], s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
-        s.points.position[2][p] * 1e6, s.time * 1e9, s.fault.cause));
-  }
+  bodies::raise_recorded_fault(s);
   if (s.departing > 0) remove_departed_points(s);
 }
 

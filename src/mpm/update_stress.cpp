@@ -9,8 +9,8 @@
 #include "bodies/update_points.hpp"
 #include "bonding/bond_law.hpp"
 #include "core/double4.hpp"
+#include "materials/artificial_viscosity.hpp"
 #include "materials/model_dispatch.hpp"
-#include "mpm/artificial_viscosity.hpp"
 #include "mpm/departures.hpp"
 #include "mpm/phases.hpp"
 
@@ -38,12 +38,7 @@ void check_point(State& s, std::size_t p) {
     }
     return;
   }
-  Fault& fault = s.fault;
-#pragma omp critical(coldspray_fault)
-  if (p < fault.point) {
-    fault.point = p;
-    fault.cause = cause;
-  }
+  bodies::record_fault(s.fault, p, cause);
 }
 
 // Steps 9-11 for batches [first, end) of one body (eqs 3.34-3.36, Appendix A), through the
@@ -89,8 +84,8 @@ double update_body_stress(State& s, const BodyRange& body, std::size_t first_bat
     // Artificial bulk viscosity on the step's volumetric rate, and its work.
     const double trace_L = L0[0] + L11 + L2[2];
     const double rho_new = body.material.density / k.J_new;
-    const double q =
-        bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h, P.sound_speed[p], trace_L);
+    const double q = materials::bulk_viscous_pressure(s.viscosity, rho_new, s.layout.h,
+                                                      P.sound_speed[p], trace_L);
     P.bulk_viscosity[p] = q;
     P.viscous_work[p] -= q * trace_L * dt * P.volume0[p] * k.J_new;
     return k;

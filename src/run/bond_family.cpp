@@ -263,7 +263,7 @@ void run_bond_family(const std::vector<FamilyMember>& members, const FamilyHooks
   }
   std::vector<bonding::BondLaw> laws;
   for (const FamilyMember& m : members)
-    laws.push_back(bonding::BondLaw::from_case(m.c.bonding, m.c.grid.cell_size));
+    laws.push_back(bonding::BondLaw::from_case(m.c.bonding, m.c.grid->cell_size));
   state.bond_shadows.follow(laws, state.points);
   Trunk(members, hooks, std::move(state)).run();
 }

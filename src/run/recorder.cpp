@@ -35,6 +35,7 @@ Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::files
       verdict_(c.metrics, s) {
   summary_.threads = omp_get_max_threads();
   summary_.particles = s.points.size();
+  summary_.discretisation = s.discretisation;
   summary_.total_energy_initial = metrics::energy_budget(s).total();
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "mpm/stepper.hpp"
+#include "pd/stepper.hpp"
 
 namespace coldspray::run {
 
@@ -42,6 +43,12 @@ void advance(mpm::State& s, const StepRule& rule, ResumeAt resume) {
     mpm::step_to_contact(s);
   }
   mpm::step_from_contact(s);
+}
+
+// One step of peridynamics (it has no contact decision to resume at).
+void advance(pd::State& s, const StepRule& rule, ResumeAt) {
+  s.dt = rule.next_dt(s);
+  pd::step(s);
 }
 
 }  // namespace
@@ -92,5 +99,6 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
 }
 
 template Summary run_to_end(mpm::State&, StepRule, Recorder&, bool, ResumeAt);
+template Summary run_to_end(pd::State&, StepRule, Recorder&, bool, ResumeAt);
 
 }  // namespace coldspray::run

@@ -9,10 +9,11 @@
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "mpm/state.hpp"
+#include "pd/state.hpp"
 
 namespace coldspray::run {
 
-using SolverState = std::variant<mpm::State>;
+using SolverState = std::variant<mpm::State, pd::State>;
 
 // The solver's state at t = 0 for the case; throws InputError before anything is written if the
 // case's geometry is invalid.

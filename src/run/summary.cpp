@@ -17,6 +17,10 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
   j["shared_steps"] = s.shared_steps;
   j["threads"] = s.threads;
   j["particles"] = s.particles;
+  j["solver"] = {
+      {"method", s.discretisation.method},
+      {s.discretisation.method == "mpm" ? "cell_size" : "horizon", s.discretisation.length}};
+  if (s.discretisation.method == "peridynamics") j["solver"]["bonds"] = s.discretisation.bonds;
   j["particle_steps_per_second"] = s.particle_steps_per_second;
   j["last_dt"] = s.last_dt;
   j["energy"] = {{"kinetic", s.energy.kinetic},

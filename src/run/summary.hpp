@@ -20,6 +20,7 @@ struct Summary {
   int extensions = 0;         // verdict windows the run was extended by while undecided
   int threads = 1;
   std::size_t particles = 0;
+  bodies::Discretisation discretisation;
   double particle_steps_per_second = 0.0;
   double last_dt = 0.0;
   metrics::EnergyBudget energy;

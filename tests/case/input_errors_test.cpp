@@ -151,7 +151,7 @@ TEST(InputErrors, AxisymmetricBodiesMustBeSymmetricAboutZ) {
 TEST(InputErrors, AxisymmetricGridIgnoresY) {
   const Case c =
       load_case(case_path("grid-min-max-y.yaml"), {parse_override("solver.geometry=axisymmetric")});
-  EXPECT_EQ((*c.grid.max)[1], 0.0);
+  EXPECT_EQ((*c.grid->max)[1], 0.0);
 }
 
 TEST(InputErrors, FileNotFound) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -44,6 +45,11 @@ class Vocabulary {
   void section(std::string_view key, T& value, Presence) {
     add(key);
     fields(*this, value);
+  }
+  template <class T>
+  void section(std::string_view key, std::optional<T>&, Presence presence) {
+    T value{};
+    section(key, value, presence);
   }
   template <class T, class Alternative>
   void section_either(std::string_view key, T& value, Presence presence,

@@ -22,10 +22,10 @@ TEST(LoadCase, FillsEveryDefault) {
   EXPECT_EQ(b.temperature, 298.0);
   EXPECT_TRUE(b.absorbing.empty());
   EXPECT_TRUE(b.fixed.empty());
-  EXPECT_FALSE(c.grid.min.has_value());
-  EXPECT_FALSE(c.grid.max.has_value());
-  ASSERT_EQ(c.grid.faces.size(), 6u);
-  for (const auto& [face, condition] : c.grid.faces) EXPECT_EQ(condition, FaceCondition::Free);
+  EXPECT_FALSE(c.grid->min.has_value());
+  EXPECT_FALSE(c.grid->max.has_value());
+  ASSERT_EQ(c.grid->faces.size(), 6u);
+  for (const auto& [face, condition] : c.grid->faces) EXPECT_EQ(condition, FaceCondition::Free);
   EXPECT_EQ(c.solver.method, Method::Mpm);
   EXPECT_EQ(c.solver.geometry, Geometry::ThreeD);
   EXPECT_EQ(c.solver.shape_function, ShapeFunction::Gimp);
@@ -70,12 +70,12 @@ TEST(LoadCase, ReadsEveryKeyInSi) {
   EXPECT_EQ(box.max, Vec3(20e-6, 20e-6, -20e-6));
   EXPECT_EQ(c.bodies[3].velocity, Vec3(1, -2, 3));  // mixed units and a bare SI number
 
-  EXPECT_EQ(c.grid.cell_size, 0.7e-6);
-  EXPECT_EQ(c.grid.min, Vec3(-40e-6, -40e-6, -40e-6));
-  EXPECT_EQ(c.grid.max, Vec3(40e-6, 40e-6, 30e-6));
-  EXPECT_EQ(c.grid.faces.at(GridFace::XMin), FaceCondition::Fixed);
-  EXPECT_EQ(c.grid.faces.at(GridFace::ZMin), FaceCondition::Roller);
-  EXPECT_EQ(c.grid.faces.at(GridFace::ZMax), FaceCondition::Free);
+  EXPECT_EQ(c.grid->cell_size, 0.7e-6);
+  EXPECT_EQ(c.grid->min, Vec3(-40e-6, -40e-6, -40e-6));
+  EXPECT_EQ(c.grid->max, Vec3(40e-6, 40e-6, 30e-6));
+  EXPECT_EQ(c.grid->faces.at(GridFace::XMin), FaceCondition::Fixed);
+  EXPECT_EQ(c.grid->faces.at(GridFace::ZMin), FaceCondition::Roller);
+  EXPECT_EQ(c.grid->faces.at(GridFace::ZMax), FaceCondition::Free);
 
   EXPECT_EQ(c.solver.shape_function, ShapeFunction::Linear);
   EXPECT_EQ(c.solver.end_time, 80e-9);

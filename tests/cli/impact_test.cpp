@@ -91,7 +91,7 @@ TEST(Impact, WriteCaseGivesTheThesisGeometryAndPassesCheck) {
   EXPECT_DOUBLE_EQ(substrate.height, 10e-6);
   EXPECT_DOUBLE_EQ(substrate.base_center.z() + substrate.height, 0.0);
   EXPECT_EQ(c.bodies[1].absorbing.size(), 2u);
-  EXPECT_DOUBLE_EQ(c.grid.cell_size, 0.7e-6);
+  EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.7e-6);
   for (const auto& b : c.bodies) EXPECT_DOUBLE_EQ(b.spacing, 0.175e-6);
   EXPECT_EQ(c.solver.geometry, case_file::Geometry::Axisymmetric);
   EXPECT_DOUBLE_EQ(c.solver.end_time, 80e-9);
@@ -108,7 +108,7 @@ TEST(Impact, OptionsReachTheCase) {
       " --grid 1um/0.25um --bonding strain --eps-c 1.2 --eps-c-rate '8e8 1/s' --Gc 1400J/m^2 "
       "--Gc-rate 2J/m^2/us --floor 0.2 --end-time 60ns --shape-function linear "
       "--substrate-material cu-ptw --set solver.cfl=0.2");
-  EXPECT_DOUBLE_EQ(c.grid.cell_size, 1e-6);
+  EXPECT_DOUBLE_EQ(c.grid->cell_size, 1e-6);
   EXPECT_DOUBLE_EQ(c.bodies[1].spacing, 0.25e-6);
   EXPECT_EQ(c.bodies[1].material, "cu-ptw");
   EXPECT_EQ(c.bonding.model, case_file::BondingModel::Strain);
@@ -125,20 +125,20 @@ TEST(Impact, OptionsReachTheCase) {
 TEST(Impact, ThreeDIsAQuarterModelOnSymmetryPlanes) {
   const case_file::Case c = written_case(kCase22 + " --geometry 3d --grid 1um/0.25um");
   EXPECT_EQ(c.solver.geometry, case_file::Geometry::ThreeD);
-  ASSERT_TRUE(c.grid.min.has_value());
-  EXPECT_EQ(c.grid.min->x(), 0.0);
-  EXPECT_EQ(c.grid.min->y(), 0.0);
-  EXPECT_EQ(c.grid.faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Roller);
-  EXPECT_EQ(c.grid.faces.at(case_file::GridFace::YMin), case_file::FaceCondition::Roller);
+  ASSERT_TRUE(c.grid->min.has_value());
+  EXPECT_EQ(c.grid->min->x(), 0.0);
+  EXPECT_EQ(c.grid->min->y(), 0.0);
+  EXPECT_EQ(c.grid->faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Roller);
+  EXPECT_EQ(c.grid->faces.at(case_file::GridFace::YMin), case_file::FaceCondition::Roller);
   // The substrate's rim and the rebound stay on the grid: the solver's own margin (half the
   // extent) around the 22 um wide, 32 um tall quarter, snapped to whole cells.
-  EXPECT_NEAR(c.grid.max->x(), 33e-6, 1e-12);
-  EXPECT_NEAR(c.grid.min->z(), -26e-6, 1e-12);
-  EXPECT_NEAR(c.grid.max->z(), 38e-6, 1e-12);
+  EXPECT_NEAR(c.grid->max->x(), 33e-6, 1e-12);
+  EXPECT_NEAR(c.grid->min->z(), -26e-6, 1e-12);
+  EXPECT_NEAR(c.grid->max->z(), 38e-6, 1e-12);
 
   const case_file::Case whole = written_case(kCase22 + " --geometry 3d --symmetry none");
-  EXPECT_FALSE(whole.grid.min.has_value());
-  EXPECT_EQ(whole.grid.faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Free);
+  EXPECT_FALSE(whole.grid->min.has_value());
+  EXPECT_EQ(whole.grid->faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Free);
 }
 
 TEST(Impact, UnknownMaterialNamesTheOption) {

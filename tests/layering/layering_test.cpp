@@ -24,7 +24,8 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"bodies", {"core", "case", "materials", "geometry"}},
     {"metrics", {"core", "case", "materials", "geometry", "bodies"}},
     {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies"}},
-    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm"}},
+    {"pd", {"core", "case", "materials", "geometry", "bodies"}},
+    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm", "pd"}},
     {"studies", {"core", "case", "io", "run"}},
     {"cli", {"core", "case", "io", "material_test", "mpm", "run", "studies"}},
 };

@@ -1,0 +1,45 @@
+// Contact between bodies in peridynamics: the short-range repulsive force between points of
+// different bodies (Silling and Askari 2005, §"short-range forces"; Parks et al., Comput. Phys.
+// Commun. 179 (2008) 777, as LAMMPS's PERI package implements it): a point pair closer than the
+// contact distance d pushes apart with force density
+//   f = k_c c (d - r) / delta V_j  along the line between them,
+// c = 18 K / (pi delta^4) the bond micromodulus. The pairs are found in the current
+// configuration with a cell list, kept with a skin and rebuilt once some point has moved half
+// the skin since the last build. Adhesive contact (the PD paper's models 1 and 2) will be
+// another force law on these same pairs.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bodies/bodies.hpp"
+
+namespace coldspray::pd {
+
+struct ContactList {
+  double skin = 0.0;                            // m
+  std::vector<std::size_t> begin;               // point i's candidates: [begin[i], begin[i + 1])
+  std::vector<std::uint32_t> other;             // candidate points of other bodies, ascending
+  std::array<std::vector<double>, 3> built_at;  // the positions at the last build, m
+  // Scratch of the builds, kept so that rebuilding allocates only when the list grows.
+  std::vector<std::size_t> cell_start, cell_cursor;
+  std::vector<std::uint32_t> cell_order, cell_of;
+  long builds = 0;
+
+  // Whether some point has moved more than half the skin since the last build.
+  bool stale(const bodies::Points& P) const;
+  // Finds, for every point, the points of other bodies within reach = max contact distance +
+  // skin (a cell list of cells `reach` wide over all points).
+  void build(const bodies::Points& P, double reach);
+};
+
+// The contact force law between points i and j (of different bodies): contact distance d,
+// constant k_c c / delta in N/m^7 (see above).
+struct ContactLaw {
+  double distance = 0.0;   // m
+  double stiffness = 0.0;  // k_c c / delta, N/m^7
+};
+
+}  // namespace coldspray::pd

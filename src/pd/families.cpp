@@ -1,0 +1,104 @@
+#include "pd/families.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace coldspray::pd {
+
+double volume_fraction(double r, double delta, double h) {
+  if (r <= delta - 0.5 * h) return 1.0;
+  if (r >= delta + 0.5 * h) return 0.0;
+  return (delta + 0.5 * h - r) / h;
+}
+
+namespace {
+
+// One body's points binned into cubic cells of edge `cell`, counting sort by cell, so a point's
+// neighbours are searched in the 27 cells around its own.
+struct CellList {
+  double cell = 0.0;
+  std::array<double, 3> origin{};
+  std::array<long, 3> cells{};
+  std::vector<std::size_t> start;    // cell c's points are order[start[c] .. start[c + 1])
+  std::vector<std::uint32_t> order;  // point indices, by cell, ascending within a cell
+
+  long index(long i, long j, long k) const { return (k * cells[1] + j) * cells[0] + i; }
+  long coordinate(double x, int d) const {
+    return std::clamp(static_cast<long>(std::floor((x - origin[d]) / cell)), 0L, cells[d] - 1);
+  }
+};
+
+CellList bin(const std::array<std::vector<double>, 3>& X, const bodies::BodyRange& body,
+             double cell) {
+  CellList list;
+  list.cell = cell;
+  for (int d = 0; d < 3; ++d) {
+    const auto [lo, hi] = std::minmax_element(X[d].begin() + static_cast<long>(body.begin),
+                                              X[d].begin() + static_cast<long>(body.end));
+    list.origin[d] = *lo;
+    list.cells[d] = static_cast<long>(std::floor((*hi - *lo) / cell)) + 1;
+  }
+  const std::size_t n = static_cast<std::size_t>(list.cells[0] * list.cells[1] * list.cells[2]);
+  list.start.assign(n + 1, 0);
+  std::vector<std::size_t> cell_of(body.end - body.begin);
+  for (std::size_t p = body.begin; p < body.end; ++p) {
+    const long c = list.index(list.coordinate(X[0][p], 0), list.coordinate(X[1][p], 1),
+                              list.coordinate(X[2][p], 2));
+    cell_of[p - body.begin] = static_cast<std::size_t>(c);
+    ++list.start[c + 1];
+  }
+  for (std::size_t c = 0; c < n; ++c) list.start[c + 1] += list.start[c];
+  list.order.resize(body.end - body.begin);
+  std::vector<std::size_t> cursor(list.start.begin(), list.start.end() - 1);
+  for (std::size_t p = body.begin; p < body.end; ++p)
+    list.order[cursor[cell_of[p - body.begin]]++] = static_cast<std::uint32_t>(p);
+  return list;
+}
+
+}  // namespace
+
+Families build_families(const std::array<std::vector<double>, 3>& X,
+                        const std::vector<bodies::BodyRange>& bodies,
+                        const std::vector<double>& delta) {
+  const std::size_t n = X[0].size();
+  if (n >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("peridynamics: more than 2^32 points");
+  Families f;
+  f.begin.assign(n + 1, 0);
+  std::vector<std::uint32_t> found;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const bodies::BodyRange& body = bodies[b];
+    const double h = body.spacing, reach = delta[b] + 0.5 * h;
+    const CellList list = bin(X, body, reach);
+    for (std::size_t p = body.begin; p < body.end; ++p) {
+      found.clear();
+      const long ci = list.coordinate(X[0][p], 0), cj = list.coordinate(X[1][p], 1),
+                 ck = list.coordinate(X[2][p], 2);
+      for (long k = std::max(ck - 1, 0L); k <= std::min(ck + 1, list.cells[2] - 1); ++k)
+        for (long j = std::max(cj - 1, 0L); j <= std::min(cj + 1, list.cells[1] - 1); ++j)
+          for (long i = std::max(ci - 1, 0L); i <= std::min(ci + 1, list.cells[0] - 1); ++i) {
+            const long c = list.index(i, j, k);
+            for (std::size_t s = list.start[c]; s < list.start[c + 1]; ++s) {
+              const std::uint32_t q = list.order[s];
+              if (q == p) continue;
+              const double dx = X[0][q] - X[0][p], dy = X[1][q] - X[1][p], dz = X[2][q] - X[2][p];
+              if (volume_fraction(std::sqrt(dx * dx + dy * dy + dz * dz), delta[b], h) > 0.0)
+                found.push_back(q);
+            }
+          }
+      std::sort(found.begin(), found.end());
+      for (const std::uint32_t q : found) {
+        const double dx = X[0][q] - X[0][p], dy = X[1][q] - X[1][p], dz = X[2][q] - X[2][p];
+        f.neighbour.push_back(q);
+        f.volume_fraction.push_back(static_cast<float>(
+            volume_fraction(std::sqrt(dx * dx + dy * dy + dz * dz), delta[b], h)));
+      }
+      f.begin[p + 1] = f.neighbour.size();
+    }
+  }
+  return f;
+}
+
+}  // namespace coldspray::pd

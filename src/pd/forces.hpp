@@ -1,0 +1,27 @@
+// The force density at a point (PD paper eq 14): its bonds' (eqs 7-8), the zero-energy-mode
+// control's (Silling 2017) and the contacts' (pd/contact.hpp), from the state's current
+// positions, deformation gradients F and A = P K^-1.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+#include "pd/state.hpp"
+
+namespace coldspray::pd {
+
+struct ForceDensity {
+  Eigen::Vector3d bonds, control, contact;  // N/m^3
+  Eigen::Vector3d total() const { return bonds + control + contact; }
+};
+
+// Eq 8 at point i: sum over its family of T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi V_j;
+// the control: G_s c / |xi| omega (z_i + z_j) V_j with z = Y - F xi seen from either end, zero
+// under any homogeneous deformation; the contacts: sum over the points of other bodies nearby.
+ForceDensity force_density(const State& s, std::size_t i);
+
+// The short-range repulsion on i from j (pd/contact.hpp), N/m^3: zero beyond the contact
+// distance.
+Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j);
+
+}  // namespace coldspray::pd

@@ -1,0 +1,118 @@
+#include "pd/setup.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "bodies/seed_bodies.hpp"
+#include "core/error.hpp"
+#include "pd/deformation.hpp"
+#include "pd/tensor_field.hpp"
+
+namespace coldspray::pd {
+
+namespace {
+
+// A shape tensor whose smallest eigenvalue is below this fraction of its largest belongs to a
+// family that does not span three dimensions: F would not be defined (eq 5).
+constexpr double kSingularShapeRatio = 1e-8;
+
+// Eq 6 at every point, inverted; throws InputError for a singular one.
+void invert_shape_tensors(const case_file::Case& c, State& s) {
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const bodies::BodyRange& body = s.bodies[b];
+    for (std::size_t i = body.begin; i < body.end; ++i) {
+      const Eigen::Matrix3d K = shape_tensor(s.families, s.reference, s.points,
+                                             s.settings.influence, s.body_bonds[b].horizon, i);
+      const Eigen::Vector3d eigen = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(K).eigenvalues();
+      if (!(eigen[0] > kSingularShapeRatio * eigen[2]))
+        throw InputError(
+            c.source_file, fmt::format("bodies.{}.spacing", body.name),
+            fmt::format("point {} of body '{}' has a family of {} neighbours that does not span "
+                        "three dimensions (singular shape tensor, PD paper eq 6): give the body "
+                        "more points across its thinnest part or a larger "
+                        "peridynamics.horizon_factor",
+                        i - body.begin, body.name, s.family_size[i]));
+      store_tensor(K.inverse(), s.shape_inverse, i);
+    }
+  }
+}
+
+// The law between bodies a and b (pd/contact.hpp): the distance from the finer spacing, the
+// constant from the softer material and the larger horizon, the same both ways.
+ContactLaw contact_law(const State& s, std::size_t a, std::size_t b) {
+  const double delta = std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon);
+  const double K = std::min(s.bodies[a].material.elastic.bulk_modulus,
+                            s.bodies[b].material.elastic.bulk_modulus);
+  const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
+  return {s.settings.contact_distance * std::min(s.bodies[a].spacing, s.bodies[b].spacing),
+          s.settings.contact_stiffness * micromodulus / delta};
+}
+
+}  // namespace
+
+State build_state(const case_file::Case& c) {
+  State s;
+  s.settings = *c.peridynamics;
+  s.viscosity = c.solver.artificial_viscosity;
+  const std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
+  bodies::lay_out_bodies(c, seeded, s);
+  const std::size_t n = s.points.size();
+  for (int d = 0; d < 3; ++d) {
+    s.reference[d] = s.points.position[d];
+    s.acceleration[d].assign(n, 0.0);
+    s.control_force[d].assign(n, 0.0);
+    s.contact_force[d].assign(n, 0.0);
+    s.external_force[d].assign(n, 0.0);
+  }
+
+  std::vector<double> horizons;
+  s.min_spacing = s.bodies.front().spacing;
+  for (const bodies::BodyRange& body : s.bodies) {
+    const double delta = s.settings.horizon_factor * body.spacing;
+    const double K = body.material.elastic.bulk_modulus;
+    s.body_bonds.push_back({delta, 18.0 * K / (std::numbers::pi * std::pow(delta, 4))});
+    horizons.push_back(delta);
+    s.min_spacing = std::min(s.min_spacing, body.spacing);
+  }
+  s.families = build_families(s.reference, s.bodies, horizons);
+  s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
+                      s.families.bonds()};
+  s.family_size.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    s.family_size[i] = static_cast<std::uint32_t>(s.families.begin[i + 1] - s.families.begin[i]);
+
+  for (auto* field : {&s.shape_inverse, &s.deformation_gradient, &s.piola_over_shape})
+    for (auto& component : *field) component.assign(n, 0.0);
+  for (int d = 0; d < 3; ++d) s.deformation_gradient[4 * d].assign(n, 1.0);
+  invert_shape_tensors(c, s);
+
+  s.held.assign(n, 0);
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
+    for (const case_file::BodyFace face : c.bodies[b].roller) {
+      const std::uint8_t bits = bodies::faces_bits({face});
+      const std::uint8_t axes = face == case_file::BodyFace::Side ? 0b011 : 0b100;
+      for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i)
+        if (seeded[b].points.outside[i] & bits) s.held[s.bodies[b].begin + i] |= axes;
+    }
+    for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i)
+      if (seeded[b].points.outside[i] & fixed) s.held[s.bodies[b].begin + i] = 0b111;
+  }
+
+  const std::size_t m = s.bodies.size();
+  double reach = 0.0;
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = 0; b < m; ++b) {
+      s.contact_law.push_back(contact_law(s, a, b));
+      reach = std::max(reach, s.contact_law.back().distance);
+    }
+  s.contact.skin = 0.5 * s.min_spacing;
+  s.contact.build(s.points, reach + s.contact.skin);
+  return s;
+}
+
+}  // namespace coldspray::pd

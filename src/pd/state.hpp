@@ -1,0 +1,55 @@
+// Everything a peridynamics run carries from step to step: the bodies (bodies/bodies.hpp) and
+// what correspondence PD adds to them. Built once by pd/setup.hpp; the step (pd/stepper.hpp)
+// only reads and writes it, allocating nothing (but the contact list, which grows when more
+// pairs come close than ever before).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bodies/bodies.hpp"
+#include "case/case.hpp"
+#include "pd/contact.hpp"
+#include "pd/families.hpp"
+
+namespace coldspray::pd {
+
+// A 3x3 tensor per point, as nine arrays, row-major: [3 * row + column].
+using TensorField = std::array<std::vector<double>, 9>;
+
+// What a body's bonds need: its horizon delta and the bond micromodulus 18 K / (pi delta^4) of
+// its material (Silling and Askari, Comput. Struct. 83 (2005), eq 23 of the PD paper's ref 49),
+// the unit of the stabilisation and of the contact force.
+struct BodyBonds {
+  double horizon = 0.0;       // m
+  double micromodulus = 0.0;  // N/m^6
+};
+
+struct State : bodies::Bodies {
+  case_file::Peridynamics settings;
+  case_file::ArtificialViscosity viscosity;
+  std::vector<BodyBonds> body_bonds;
+
+  Families families;
+  std::array<std::vector<double>, 3> reference;  // X, the positions at t = 0, m
+  TensorField shape_inverse;                     // K^-1 (eq 6), 1/m^5
+  TensorField deformation_gradient;              // F (eq 5)
+  // A = P K^-1 of the last force evaluation (P = J (sigma - q I) F^-T, eq 7's P), Pa/m^5.
+  TensorField piola_over_shape;
+  std::array<std::vector<double>, 3> acceleration;  // m/s^2
+  // The parts of the last force density from the zero-energy-mode control and from contact,
+  // N/m^3, whose work the step books once the velocities are those of the step's end.
+  std::array<std::vector<double>, 3> control_force, contact_force;
+  std::array<std::vector<double>, 3> external_force;  // the dashpots' forces, N
+  // Per point, the velocity components held at zero: bit d for axis d (fixed and roller faces).
+  std::vector<std::uint8_t> held;
+  std::vector<std::uint32_t> family_size;  // neighbours, for the snapshots
+
+  ContactList contact;
+  std::vector<ContactLaw> contact_law;  // per ordered body pair [a * bodies + b]
+  double min_spacing = 0.0;             // the smallest body spacing, m (the time step's length)
+};
+
+}  // namespace coldspray::pd

@@ -1,0 +1,178 @@
+#include "pd/stepper.hpp"
+
+#include <omp.h>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "bodies/material_state.hpp"
+#include "bodies/update_points.hpp"
+#include "materials/artificial_viscosity.hpp"
+#include "pd/deformation.hpp"
+#include "pd/forces.hpp"
+#include "pd/tensor_field.hpp"
+
+namespace coldspray::pd {
+
+namespace {
+
+// v += dt/2 a at every point (a held point stays at rest).
+void kick(State& s) {
+  bodies::Points& P = s.points;
+  const double half = 0.5 * s.dt;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int d = 0; d < 3; ++d)
+      P.velocity[d][i] =
+          (s.held[i] >> d & 1) ? 0.0 : P.velocity[d][i] + half * s.acceleration[d][i];
+}
+
+// x += dt v.
+void drift(State& s) {
+  bodies::Points& P = s.points;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int d = 0; d < 3; ++d) {
+      P.displacement[d][i] = s.dt * P.velocity[d][i];
+      P.position[d][i] += P.displacement[d][i];
+    }
+}
+
+// Eqs 5, 28-31 at every point: F and L = Fdot F^-1 from the family, then the materials' update
+// (the MPM's, bodies/update_points.hpp) and A = P K^-1 with P = J (sigma - q I) F^-T. Returns the
+// largest c + |v|.
+double update_stress(State& s) {
+  bodies::Points& P = s.points;
+  const double dt = s.dt;
+  double max_speed = 0.0;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const bodies::BodyRange& body = s.bodies[b];
+    const double delta = s.body_bonds[b].horizon;
+    materials::visit_models(body.material, [&](const auto& models) {
+      auto kinematics_of = [&](std::size_t i) {
+        const Deformation def = deformation(s.families, s.reference, P, s.settings.influence, delta,
+                                            tensor_at(s.shape_inverse, i), i);
+        store_tensor(def.F, s.deformation_gradient, i);
+        materials::StepKinematics k;
+        k.set_velocity_gradient(def.Fdot * def.F.inverse(), dt);  // eqs 28-29
+        k.J_new = def.F.determinant();
+        return k;
+      };
+      auto complete_point = [&](std::size_t i, const materials::StepKinematics& k,
+                                const materials::PointState& state) {
+        const double eqps_before = P.eqps[i];
+        bodies::store_point_state(state, P, i);
+        if (state.eqps > eqps_before)
+          P.plastic_work[i] +=
+              state.flow_stress * (state.eqps - eqps_before) * P.volume0[i] * state.J;
+        const double trace_D = k.strain_increment.trace() / dt;
+        const double q = materials::bulk_viscous_pressure(
+            s.viscosity, body.material.density / state.J, body.spacing, P.sound_speed[i], trace_D);
+        P.bulk_viscosity[i] = q;
+        P.viscous_work[i] -= q * trace_D * dt * P.volume0[i] * state.J;
+        const Eigen::Matrix3d F = tensor_at(s.deformation_gradient, i);
+        Eigen::Matrix3d sigma = bodies::stress_at(P, i).matrix();
+        sigma.diagonal().array() -= q;
+        const Eigen::Matrix3d A =
+            state.J * sigma * F.inverse().transpose() * tensor_at(s.shape_inverse, i);
+        store_tensor(A, s.piola_over_shape, i);
+        if (!(state.J > 0.0))
+          bodies::record_fault(s.fault, i, "inverted deformation gradient (det F <= 0)");
+        else if (!A.allFinite() || !std::isfinite(state.temperature))
+          bodies::record_fault(s.fault, i, "non-finite stress or temperature");
+      };
+      const std::size_t batches = bodies::batch_count(body);
+#pragma omp parallel for schedule(static) reduction(max : max_speed)
+      for (std::size_t batch = 0; batch < batches; ++batch)
+        max_speed = std::max(max_speed, bodies::update_batches(models, P, body, batch, batch + 1,
+                                                               kinematics_of, complete_point));
+    });
+  }
+  return max_speed;
+}
+
+// a = f / rho0 at every point, with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and
+// held points at rest.
+void accelerate(State& s) {
+  bodies::Points& P = s.points;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const ForceDensity f = force_density(s, i);
+    for (int d = 0; d < 3; ++d) {
+      s.control_force[d][i] = f.control[d];
+      s.contact_force[d][i] = f.contact[d];
+    }
+    const double rho0 = s.bodies[P.body[i]].material.density;
+    for (int d = 0; d < 3; ++d)
+      s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : f.total()[d] / rho0;
+  }
+  for (bodies::AbsorbingPoint& a : s.absorbing)
+    for (int d = 0; d < 3; ++d) {
+      s.external_force[d][a.point] = -a.damping[d] * P.velocity[d][a.point];
+      if (!(s.held[a.point] >> d & 1))
+        s.acceleration[d][a.point] += s.external_force[d][a.point] / P.mass[a.point];
+    }
+}
+
+// The works of the step's control, contact and dashpot forces f^{n+1}, booked as f^{n+1} .
+// v^{n+1} dt: in velocity Verlet f^{n+1} acts over (x^{n+2} - x^n) / 2 = v^{n+1} dt, so that a
+// conservative force's work telescopes. (With v^{n+1/2}, the work is off by dt^2/2 |f|^2 / rho
+// each step, always of one sign.)
+void book_works(State& s) {
+  bodies::Points& P = s.points;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    double control = 0.0, contact = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      control += s.control_force[d][i] * P.velocity[d][i];
+      contact += s.contact_force[d][i] * P.velocity[d][i];
+    }
+    P.viscous_work[i] -= control * P.volume0[i] * s.dt;
+    P.contact_work[i] += contact * P.volume0[i] * s.dt;
+  }
+  for (bodies::AbsorbingPoint& a : s.absorbing)
+    for (int d = 0; d < 3; ++d)
+      a.absorbed -= s.external_force[d][a.point] * P.velocity[d][a.point] * s.dt;
+}
+
+// The impulse between each pair of bodies over the step (contact.csv), summed over the contact
+// pairs in point order.
+void sum_contact_impulses(State& s) {
+  const std::size_t m = s.bodies.size();
+  for (auto& impulse : s.contact_impulse) impulse = {0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
+      const std::size_t j = s.contact.other[c];
+      const Eigen::Vector3d f = contact_force(s, i, j) * (s.points.volume0[i] * s.dt);
+      auto& impulse = s.contact_impulse[s.points.body[i] * m + s.points.body[j]];
+      for (int d = 0; d < 3; ++d) impulse[d] += f[d];
+    }
+}
+
+}  // namespace
+
+double stable_time_step(const State& s, double cfl) {
+  return cfl * s.min_spacing / s.max_signal_speed;
+}
+
+void step(State& s) {
+  kick(s);   // v^{n+1/2}
+  drift(s);  // x^{n+1}
+  if (s.contact.stale(s.points)) {
+    double reach = 0.0;
+    for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.distance);
+    s.contact.build(s.points, reach + s.contact.skin);
+  }
+  s.max_signal_speed = update_stress(s);
+  bodies::raise_recorded_fault(s);
+  accelerate(s);  // a^{n+1}
+  kick(s);        // v^{n+1}
+  book_works(s);
+  sum_contact_impulses(s);
+  s.time += s.dt;
+  ++s.step;
+}
+
+}  // namespace coldspray::pd

@@ -1,0 +1,18 @@
+// One explicit step of correspondence peridynamics (PD paper eqs 5-8, 28-31), velocity Verlet.
+#pragma once
+
+#include "pd/state.hpp"
+
+namespace coldspray::pd {
+
+// cfl h / max(c + |v|), h the smallest body spacing: the bound of an explicit scheme on a
+// lattice of spacing h whose stiffness is the continuum's (correspondence PD reproduces the
+// local elastic moduli; docs/pd.md, "Time step").
+double stable_time_step(const State& s, double cfl);
+
+// Advances the state by s.dt. Throws RunFault (body, point, time, cause) when a point's state
+// stops being finite or its deformation gradient inverts; the state is then that of the failed
+// step.
+void step(State& s);
+
+}  // namespace coldspray::pd

@@ -1,0 +1,83 @@
+// The checks that depend on solver.method (case/validate.cpp, docs/input-reference.md "Checks
+// across keys"): each gives an InputError naming the file and the key.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "case/load.hpp"
+#include "case_test_support.hpp"
+
+namespace coldspray::case_file {
+namespace {
+
+using testing::contains;
+using testing::input_error;
+
+std::string example(const std::string& name) {
+  return std::string(COLDSPRAY_SOURCE_DIR) + "/examples/" + name;
+}
+
+// The error names `key` and points at the --set that gave it, or else into the file.
+void expect_error(const std::string& file, const std::vector<Override>& overrides,
+                  const std::string& key, const std::string& message) {
+  SCOPED_TRACE(key);
+  const InputError e = input_error([&] { load_case(example(file), overrides); });
+  bool from_set = false;
+  for (const Override& o : overrides) from_set = from_set || o.key == key;
+  EXPECT_TRUE(contains(e.where(), from_set ? "--set " + key : example(file) + ":"));
+  EXPECT_EQ(e.key(), key);
+  EXPECT_TRUE(contains(e.message(), message));
+}
+
+TEST(SolverSections, TheMpmNeedsAGrid) {
+  expect_error("verification/pd-elastic-spheres.yaml", {{"solver.method", "mpm"}}, "grid",
+               "solver.method mpm needs a grid");
+}
+
+TEST(SolverSections, PeridynamicsIsThreeDimensional) {
+  expect_error("verification/pd-elastic-spheres.yaml", {{"solver.geometry", "axisymmetric"}},
+               "solver.geometry", "must be 3d with solver.method peridynamics");
+}
+
+TEST(SolverSections, TheHorizonFactorLiesBetweenTwoAndSix) {
+  for (const char* factor : {"1.5", "6.5"})
+    expect_error("verification/pd-elastic-spheres.yaml", {{"peridynamics.horizon_factor", factor}},
+                 "peridynamics.horizon_factor", "must be in [2, 6]");
+}
+
+TEST(SolverSections, UnknownPeridynamicsKeysAreErrors) {
+  expect_error("verification/pd-elastic-spheres.yaml", {{"peridynamics.horizon", "3"}},
+               "peridynamics.horizon", "unknown key 'horizon'");
+}
+
+TEST(SolverSections, TheBondingModelIsTheMpms) {
+  expect_error("verification/pd-elastic-spheres.yaml", {{"bonding.model", "energy"}},
+               "bonding.model", "must be none with solver.method peridynamics");
+}
+
+TEST(SolverSections, RollerFacesArePeridynamicsOnly) {
+  expect_error("al-14um-810.yaml", {{"bodies.substrate.roller", "[side]"}},
+               "bodies.substrate.roller", "is peridynamics only");
+}
+
+// One case, both solvers: the section of the solver not chosen is read but not used.
+TEST(SolverSections, ACaseWithBothSectionsRunsOnEither) {
+  const std::vector<Override> pd = {{"solver.method", "peridynamics"},
+                                    {"solver.geometry", "3d"},
+                                    {"peridynamics.horizon_factor", "4"}};
+  const Case c = load_case(example("verification/sliding-impact-3d.yaml"), pd);
+  EXPECT_EQ(c.solver.method, Method::Peridynamics);
+  ASSERT_TRUE(c.grid.has_value());
+  EXPECT_EQ(c.peridynamics->horizon_factor, 4.0);
+  const Case m = load_case(example("verification/sliding-impact-3d.yaml"));
+  EXPECT_EQ(m.solver.method, Method::Mpm);
+  EXPECT_FALSE(m.peridynamics.has_value());
+  // Without the section, a peridynamics case takes its defaults (and echoes them).
+  const Case d = load_case(example("verification/pd-elastic-spheres.yaml"));
+  ASSERT_TRUE(d.peridynamics.has_value());
+  EXPECT_EQ(*d.peridynamics, Peridynamics{});
+}
+
+}  // namespace
+}  // namespace coldspray::case_file

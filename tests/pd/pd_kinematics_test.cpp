@@ -1,0 +1,203 @@
+// Correspondence peridynamics against hand references: the families against a brute-force
+// search; the patch test (a homogeneous deformation gives the exact F and Fdot at every point,
+// PD paper eqs 5-6); the zero-energy-mode control (Silling 2017), which resists a mode that
+// leaves F unchanged and leaves a homogeneous deformation untouched; and the bond forces, whose
+// sum over all points (weighted by volume) vanishes for any deformation.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+#include <string>
+
+#include "case/load.hpp"
+#include "core/error.hpp"
+#include "pd/deformation.hpp"
+#include "pd/forces.hpp"
+#include "pd/setup.hpp"
+#include "pd/tensor_field.hpp"
+
+namespace coldspray::pd {
+namespace {
+
+// A block of elastic aluminium at 0.25 um spacing, 3 x 2.5 x 2 um unless given.
+State block(const std::string& influence = "constant", const std::string& top = "2 um") {
+  const std::string text = R"(name: block
+materials:
+  elastic-al:
+    density: 2700 kg/m^3
+    elastic: {shear_modulus: 26 GPa, bulk_modulus: 66.4 GPa}
+    strength: {model: elastic}
+    eos: {model: linear}
+    melt: {model: constant, temperature: 933 K}
+    specific_heat: 896 J/kg/K
+bodies:
+  - name: block
+    material: elastic-al
+    shape: {type: box, min: [0, 0, 0], max: [3 um, 2.5 um, )" +
+                           top + R"(]}
+    spacing: 0.25 um
+solver: {method: peridynamics, end_time: 1 ns}
+peridynamics: {influence: )" +
+                           influence + "}\n";
+  return build_state(case_file::load_case_text("block.yaml", text, {}, {}));
+}
+
+TEST(PeridynamicFamilies, MatchABruteForceSearch) {
+  const State s = block();
+  const double h = 0.25e-6, delta = 3.0 * h;
+  const std::size_t n = s.points.size();
+  std::size_t bonds = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t b = s.families.begin[i];
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      double r2 = 0.0;
+      for (int d = 0; d < 3; ++d) r2 += std::pow(s.reference[d][j] - s.reference[d][i], 2);
+      const double beta = volume_fraction(std::sqrt(r2), delta, h);
+      if (beta == 0.0) continue;
+      ASSERT_LT(b, s.families.begin[i + 1]) << "point " << i;
+      EXPECT_EQ(s.families.neighbour[b], j);
+      EXPECT_FLOAT_EQ(s.families.volume_fraction[b], static_cast<float>(beta));
+      ++b;
+      ++bonds;
+    }
+    EXPECT_EQ(b, s.families.begin[i + 1]);
+  }
+  EXPECT_EQ(bonds, s.families.bonds());
+  // An interior point has every lattice site within delta + h/2 = 3.5 h: 4/3 pi 3.5^3 = 180
+  // sites, less the edge. Counted by hand over the integer lattice: 178 sites with
+  // i^2 + j^2 + k^2 <= 12.25 besides the origin (|xi| = 3.5 h itself has none).
+  std::size_t most = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    most = std::max<std::size_t>(most, s.families.begin[i + 1] - s.families.begin[i]);
+  EXPECT_EQ(most, 178u);
+}
+
+// One layer of points: every family is flat, its shape tensor singular (eq 6), and the set-up
+// says so, naming the body's spacing.
+TEST(PeridynamicFamilies, AFlatBodyIsAnInputError) {
+  try {
+    block("constant", "0.25 um");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "bodies.block.spacing");
+    EXPECT_NE(std::string(e.message()).find("does not span three dimensions"), std::string::npos);
+  }
+}
+
+TEST(PeridynamicFamilies, PartialVolumeAcrossTheHorizonEdge) {
+  const double h = 1.0, delta = 3.0;
+  EXPECT_DOUBLE_EQ(volume_fraction(2.5, delta, h), 1.0);
+  EXPECT_DOUBLE_EQ(volume_fraction(3.0, delta, h), 0.5);
+  EXPECT_DOUBLE_EQ(volume_fraction(3.25, delta, h), 0.25);
+  EXPECT_DOUBLE_EQ(volume_fraction(3.5, delta, h), 0.0);
+}
+
+// y = F0 X + c and v = L0 y at every point.
+void deform(State& s, const Eigen::Matrix3d& F0, const Eigen::Matrix3d& L0) {
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Eigen::Vector3d y = F0 * vector_at(s.reference, i) + Eigen::Vector3d(1e-7, -2e-7, 3e-7);
+    const Eigen::Vector3d v = L0 * y;
+    for (int d = 0; d < 3; ++d) {
+      s.points.position[d][i] = y[d];
+      s.points.velocity[d][i] = v[d];
+    }
+  }
+}
+
+TEST(PeridynamicKinematics, HomogeneousDeformationGivesTheExactGradientAtEveryPoint) {
+  Eigen::Matrix3d F0, L0;
+  F0 << 1.10, 0.05, -0.02, 0.03, 0.95, 0.04, -0.01, 0.02, 1.07;
+  L0 << 2e6, -1e6, 3e5, 4e5, -1e6, 2e5, -3e5, 1e5, 5e5;
+  for (const std::string influence : {"constant", "inverse_distance"}) {
+    State s = block(influence);
+    deform(s, F0, L0);
+    double worst_F = 0.0, worst_Fdot = 0.0;
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const Deformation d = deformation(s.families, s.reference, s.points, s.settings.influence,
+                                        s.body_bonds[0].horizon, tensor_at(s.shape_inverse, i), i);
+      worst_F = std::max(worst_F, (d.F - F0).cwiseAbs().maxCoeff());
+      worst_Fdot = std::max(worst_Fdot, (d.Fdot - L0 * F0).cwiseAbs().maxCoeff() / 2e6);
+    }
+    EXPECT_LT(worst_F, 1e-12) << influence;
+    EXPECT_LT(worst_Fdot, 1e-12) << influence;
+  }
+}
+
+// Sets every point's F from its family, and A = P K^-1 from a given uniform Cauchy stress.
+void set_gradients(State& s, const Eigen::Matrix3d& sigma) {
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Deformation d = deformation(s.families, s.reference, s.points, s.settings.influence,
+                                      s.body_bonds[0].horizon, tensor_at(s.shape_inverse, i), i);
+    store_tensor(d.F, s.deformation_gradient, i);
+    const Eigen::Matrix3d A =
+        d.F.determinant() * sigma * d.F.inverse().transpose() * tensor_at(s.shape_inverse, i);
+    store_tensor(A, s.piola_over_shape, i);
+  }
+}
+
+// Interior points: a horizon away from every face.
+bool interior(const State& s, std::size_t i) {
+  const double delta = s.body_bonds[0].horizon, max[3] = {3e-6, 2.5e-6, 2e-6};
+  for (int d = 0; d < 3; ++d)
+    if (s.reference[d][i] < delta + 1e-9 || s.reference[d][i] > max[d] - delta - 1e-9) return false;
+  return true;
+}
+
+TEST(PeridynamicControl, ResistsAZeroEnergyModeAndLeavesHomogeneousDeformationAlone) {
+  State s = block();
+  const double h = 0.25e-6, amplitude = 1e-9;
+  // u = a (-1)^(i+j+k) e_x on the lattice: xi and -xi see the same difference, so the sums of
+  // eq 5 cancel and F = I at interior points, a deformation the correspondence force cannot see.
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    long parity = 0;
+    for (int d = 0; d < 3; ++d) parity += std::lround(s.reference[d][i] / h - 0.5);
+    s.points.position[0][i] += (parity % 2 == 0 ? 1.0 : -1.0) * amplitude;
+  }
+  set_gradients(s, Eigen::Matrix3d::Zero());
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    if (!interior(s, i)) continue;
+    ++checked;
+    EXPECT_LT((tensor_at(s.deformation_gradient, i) - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    const ForceDensity f = force_density(s, i);
+    EXPECT_EQ(f.bonds.norm(), 0.0);
+    const double u = s.points.position[0][i] - s.reference[0][i];
+    EXPECT_LT(f.control[0] * u, 0.0) << "point " << i << ": the control must restore";
+  }
+  EXPECT_GT(checked, 20u);
+
+  // A homogeneous stretch and shear: z = Y - F xi = 0 on every bond, so no control force
+  // anywhere, surface points included.
+  State t = block();
+  Eigen::Matrix3d F0;
+  F0 << 1.01, 0.02, 0.0, 0.0, 0.99, 0.01, 0.0, 0.0, 1.005;
+  deform(t, F0, Eigen::Matrix3d::Zero());
+  set_gradients(t, Eigen::Matrix3d::Zero());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < t.points.size(); ++i)
+    worst = std::max(worst, force_density(t, i).control.norm());
+  // The scale: the control's force on the zero-energy mode above, per unit of displacement.
+  const double unit = s.settings.stabilization * s.body_bonds[0].micromodulus * 1e-6;
+  EXPECT_LT(worst, 1e-10 * unit);
+}
+
+TEST(PeridynamicForces, InternalForcesSumToZero) {
+  State s = block();
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    for (int d = 0; d < 3; ++d) s.points.position[d][i] += 1e-9 * std::sin(1.7 * i + 0.9 * d);
+  Eigen::Matrix3d sigma;
+  sigma << 1e8, 2e7, 0.0, 2e7, -5e7, 1e7, 0.0, 1e7, 3e7;
+  set_gradients(s, sigma);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), scale = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const ForceDensity f = force_density(s, i);
+    total += (f.bonds + f.control) * s.points.volume0[i];
+    scale += (f.bonds + f.control).cwiseAbs() * s.points.volume0[i];
+  }
+  EXPECT_LT(total.norm(), 1e-12 * scale.norm());
+}
+
+}  // namespace
+}  // namespace coldspray::pd
