@@ -112,6 +112,34 @@ std::vector<SeededBody> seed_bodies(const case_file::Case& c) {
   return seeded;
 }
 
+void cut_at_planes(const case_file::Case& c, const std::vector<CutPlane>& planes,
+                   const char* planes_name, std::vector<SeededBody>& seeded) {
+  for (std::size_t b = 0; b < seeded.size(); ++b) {
+    SeededBody& sd = seeded[b];
+    geometry::SeededPoints kept;
+    for (std::size_t i = 0; i < sd.points.position.size(); ++i) {
+      const Vec3& x = sd.points.position[i];
+      bool inside = true;
+      for (const CutPlane& plane : planes) {
+        if (plane.keep_above ? x[plane.axis] >= plane.position : x[plane.axis] <= plane.position)
+          continue;
+        inside = false;
+        if (plane.axis < 2) sd.mirror_plane[plane.axis] = plane.position;
+      }
+      if (!inside) continue;
+      kept.position.push_back(x);
+      kept.volume.push_back(sd.points.volume[i]);
+      kept.outside.push_back(sd.points.outside[i]);
+    }
+    if (kept.position.empty())
+      throw InputError(
+          c.source_file, body_key(c.bodies[b], "shape"),
+          fmt::format("body '{}' lies wholly beyond {}", c.bodies[b].name, planes_name));
+    sd.points = std::move(kept);
+    sd.bound();
+  }
+}
+
 std::uint8_t faces_bits(const std::vector<case_file::BodyFace>& faces) {
   std::uint8_t bits = 0;
   for (auto f : faces) bits |= face_bits(f);

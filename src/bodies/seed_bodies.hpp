@@ -24,9 +24,23 @@ struct SeededBody {
   void bound();
 };
 
+// A plane a symmetric model is cut at: the points on its far side are removed, those with
+// x[axis] < position if keep_above, else those with x[axis] > position.
+struct CutPlane {
+  int axis = 0;
+  double position = 0.0;
+  bool keep_above = true;
+};
+
 // Seeds every body of the case; throws InputError for a body with no points or bodies that
 // overlap at t = 0.
 std::vector<SeededBody> seed_bodies(const case_file::Case& c);
+
+// Cuts the seeded bodies at the planes, setting a body's mirror plane (x and y planes) where it
+// was cut. Throws InputError for a body with no points left; `planes_name` names the planes in
+// that message.
+void cut_at_planes(const case_file::Case& c, const std::vector<CutPlane>& planes,
+                   const char* planes_name, std::vector<SeededBody>& seeded);
 
 // Fills s.geometry, s.points, s.bodies, s.absorbing, s.contact_impulse and s.impact_metrics
 // from the case and its seeded bodies (which a solver may have cut at its symmetry planes,

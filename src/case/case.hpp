@@ -158,6 +158,16 @@ struct Peridynamics {
   friend bool operator==(const Peridynamics&, const Peridynamics&) = default;
 };
 
+// Planes of symmetry of the model, normal to x and to y: the bodies are cut there and the solver
+// mirrors them (a quarter model of a normal impact: x = 0 and y = 0). Peridynamics; the MPM's
+// symmetry planes are its fixed and roller grid faces.
+struct Symmetry {
+  std::optional<double> x;  // m
+  std::optional<double> y;  // m
+
+  friend bool operator==(const Symmetry&, const Symmetry&) = default;
+};
+
 struct Probe {
   std::string name;
   Vec3 position = Vec3::Zero();
@@ -187,6 +197,7 @@ struct Case {
   std::optional<Grid> grid;
   Solver solver;
   std::optional<Peridynamics> peridynamics;
+  std::optional<Symmetry> symmetry;
   Contact contact;
   Bonding bonding;
   ImpactMetrics metrics;

@@ -172,6 +172,12 @@ void fields(IO& io, Peridynamics& p) {
 }
 
 template <class IO>
+void fields(IO& io, Symmetry& s) {
+  io.quantity("x", s.x, units::kLength, kOptional);
+  io.quantity("y", s.y, units::kLength, kOptional);
+}
+
+template <class IO>
 void fields(IO& io, Probe& p) {
   io.scalar("name", p.name, Text{}, kRequired);
   io.vector("position", p.position, units::kLength, kRequired);
@@ -199,6 +205,7 @@ void fields(IO& io, Case& c) {
   io.section("grid", c.grid, kOptional);
   io.section("solver", c.solver, kRequired);
   io.section("peridynamics", c.peridynamics, kOptional);
+  io.section("symmetry", c.symmetry, kOptional);
   io.section("contact", c.contact, kOptional);
   io.section("bonding", c.bonding, kOptional);
   io.section("metrics", c.metrics, kOptional);

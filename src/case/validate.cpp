@@ -40,6 +40,10 @@ void check_solver_sections(const Document& doc, const Case& c) {
   switch (c.solver.method) {
     case Method::Mpm:
       if (!c.grid) fail(doc, {"grid"}, "missing: solver.method mpm needs a grid (grid.cell_size)");
+      if (c.symmetry)
+        fail(doc, {"symmetry"},
+             "is peridynamics only: with solver.method mpm, the symmetry planes are the grid's "
+             "roller faces (grid.faces)");
       for (const Body& b : c.bodies)
         if (!b.roller.empty())
           fail(doc, {"bodies", b.name, "roller"},

@@ -20,10 +20,6 @@ namespace {
 
 using case_file::Vec3;
 
-std::string body_key(const case_file::Body& b, const char* field) {
-  return fmt::format("bodies.{}.{}", b.name, field);
-}
-
 // Places the grid. The domain is grid.min..grid.max, or the bodies' bounds plus a margin, with
 // its faces on multiples of the cell size so that the points' lattice (anchored at 0) lines up
 // with the cells. One layer of ghost nodes lies outside every face: a GIMP support reaches a
@@ -81,35 +77,16 @@ void check_inside_grid(const case_file::Case& c, const std::vector<bodies::Seede
 
 // A body may cross a fixed or roller face of the grid: such a face is a symmetry plane (a
 // quarter of a Taylor bar, half of a plate) and the body is cut there.
-void clip_at_symmetry_faces(const case_file::Case& c, const GridLayout& g,
-                            std::vector<bodies::SeededBody>& seeded) {
-  for (std::size_t b = 0; b < seeded.size(); ++b) {
-    bodies::SeededBody& sd = seeded[b];
-    geometry::SeededPoints kept;
-    for (std::size_t i = 0; i < sd.points.position.size(); ++i) {
-      const Vec3& x = sd.points.position[i];
-      bool inside = true;
-      for (const auto& [face, condition] : c.grid->faces) {
-        if (condition == case_file::FaceCondition::Free) continue;
-        const int axis = static_cast<int>(face) / 2;
-        if (g.nodes[axis] == 1) continue;
-        const bool at_max = static_cast<int>(face) % 2 == 1;
-        const double plane = at_max ? g.extent(axis) - g.h : g.origin[axis] + g.h;
-        if (at_max ? x[axis] <= plane : x[axis] >= plane) continue;
-        inside = false;
-        if (axis < 2) sd.mirror_plane[axis] = plane;
-      }
-      if (!inside) continue;
-      kept.position.push_back(x);
-      kept.volume.push_back(sd.points.volume[i]);
-      kept.outside.push_back(sd.points.outside[i]);
-    }
-    if (kept.position.empty())
-      throw InputError(c.source_file, body_key(c.bodies[b], "shape"),
-                       fmt::format("body '{}' lies outside the grid", c.bodies[b].name));
-    sd.points = std::move(kept);
-    sd.bound();
+std::vector<bodies::CutPlane> symmetry_faces(const case_file::Case& c, const GridLayout& g) {
+  std::vector<bodies::CutPlane> planes;
+  for (const auto& [face, condition] : c.grid->faces) {
+    if (condition == case_file::FaceCondition::Free) continue;
+    const int axis = static_cast<int>(face) / 2;
+    if (g.nodes[axis] == 1) continue;
+    const bool at_max = static_cast<int>(face) % 2 == 1;
+    planes.push_back({axis, at_max ? g.extent(axis) - g.h : g.origin[axis] + g.h, !at_max});
   }
+  return planes;
 }
 
 // The holds of the grid faces, on the face's node layer and the ghost layer beyond it, and in
@@ -168,7 +145,8 @@ State build_state(const case_file::Case& c) {
 
   std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
   s.layout = place_grid(c, seeded);
-  clip_at_symmetry_faces(c, s.layout, seeded);
+  bodies::cut_at_planes(c, symmetry_faces(c, s.layout), "the grid's fixed and roller faces",
+                        seeded);
   check_inside_grid(c, seeded, s.layout);
   bodies::lay_out_bodies(c, seeded, s);
   s.discretisation = {"mpm", c.grid->cell_size, 0};

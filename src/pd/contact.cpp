@@ -5,7 +5,7 @@
 
 namespace coldspray::pd {
 
-bool ContactList::stale(const bodies::Points& P) const {
+bool ContactList::stale(const Neighbours& P) const {
   const double limit = 0.25 * skin * skin;
   for (std::size_t p = 0; p < P.size(); ++p) {
     const double dx = P.position[0][p] - built_at[0][p], dy = P.position[1][p] - built_at[1][p],
@@ -15,7 +15,7 @@ bool ContactList::stale(const bodies::Points& P) const {
   return false;
 }
 
-void ContactList::build(const bodies::Points& P, double reach) {
+void ContactList::build(const Neighbours& P, double reach) {
   const std::size_t n = P.size();
   for (int d = 0; d < 3; ++d) built_at[d] = P.position[d];
   ++builds;
@@ -46,10 +46,10 @@ void ContactList::build(const bodies::Points& P, double reach) {
   cell_cursor.assign(cell_start.begin(), cell_start.end() - 1);
   for (std::size_t p = 0; p < n; ++p)
     cell_order[cell_cursor[cell_of[p]]++] = static_cast<std::uint32_t>(p);
-  begin.assign(n + 1, 0);
+  begin.assign(P.real + 1, 0);
   other.clear();
   const double reach2 = reach * reach;
-  for (std::size_t p = 0; p < n; ++p) {
+  for (std::size_t p = 0; p < P.real; ++p) {
     const long c[3] = {coordinate(P.position[0][p], 0), coordinate(P.position[1][p], 1),
                        coordinate(P.position[2][p], 2)};
     const std::size_t first = other.size();

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bodies/bodies.hpp"
+#include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
 
@@ -28,11 +28,11 @@ struct ContactList {
   std::vector<std::uint32_t> cell_order, cell_of;
   long builds = 0;
 
-  // Whether some point has moved more than half the skin since the last build.
-  bool stale(const bodies::Points& P) const;
-  // Finds, for every point, the points of other bodies within reach = max contact distance +
-  // skin (a cell list of cells `reach` wide over all points).
-  void build(const bodies::Points& P, double reach);
+  // Whether some point (real or ghost) has moved more than half the skin since the last build.
+  bool stale(const Neighbours& N) const;
+  // Finds, for every real point, the points (real or ghost) of other bodies within reach = max
+  // contact distance + skin (a cell list of cells `reach` wide over all of them).
+  void build(const Neighbours& N, double reach);
 };
 
 // The contact force law between points i and j (of different bodies): contact distance d,

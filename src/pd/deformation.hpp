@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstddef>
 
-#include "bodies/points.hpp"
 #include "case/case.hpp"
 #include "pd/families.hpp"
+#include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
 
@@ -20,25 +20,23 @@ inline double influence(case_file::Influence kind, double length, double delta) 
 
 // Calls f(bond, j, xi, |xi|, w) for the bonds of point i, w = omega beta V_j.
 template <class F>
-void for_each_bond(const Families& fam, const std::array<std::vector<double>, 3>& X,
-                   const bodies::Points& P, case_file::Influence kind, double delta, std::size_t i,
-                   F&& f) {
+void for_each_bond(const Families& fam, const Neighbours& N, case_file::Influence kind,
+                   double delta, std::size_t i, F&& f) {
+  const std::array<std::vector<double>, 3>& X = N.reference;
   for (std::size_t b = fam.begin[i]; b < fam.begin[i + 1]; ++b) {
     const std::size_t j = fam.neighbour[b];
     const Eigen::Vector3d xi(X[0][j] - X[0][i], X[1][j] - X[1][i], X[2][j] - X[2][i]);
     const double length = xi.norm();
     f(b, j, xi, length,
-      influence(kind, length, delta) * static_cast<double>(fam.volume_fraction[b]) * P.volume0[j]);
+      influence(kind, length, delta) * static_cast<double>(fam.volume_fraction[b]) * N.volume[j]);
   }
 }
 
 // Eq 6: K = sum omega xi (x) xi V_j.
-inline Eigen::Matrix3d shape_tensor(const Families& fam,
-                                    const std::array<std::vector<double>, 3>& X,
-                                    const bodies::Points& P, case_file::Influence kind,
-                                    double delta, std::size_t i) {
+inline Eigen::Matrix3d shape_tensor(const Families& fam, const Neighbours& N,
+                                    case_file::Influence kind, double delta, std::size_t i) {
   Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
-  for_each_bond(fam, X, P, kind, delta, i,
+  for_each_bond(fam, N, kind, delta, i,
                 [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double, double w) {
                   K.noalias() += w * xi * xi.transpose();
                 });
@@ -52,18 +50,15 @@ struct Deformation {
 
 // Eq 5, F = [sum omega Y (x) xi V_j] K^-1 with Y = y_j - y_i in the current positions, and
 // Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28).
-inline Deformation deformation(const Families& fam, const std::array<std::vector<double>, 3>& X,
-                               const bodies::Points& P, case_file::Influence kind, double delta,
-                               const Eigen::Matrix3d& K_inverse, std::size_t i) {
+inline Deformation deformation(const Families& fam, const Neighbours& N, case_file::Influence kind,
+                               double delta, const Eigen::Matrix3d& K_inverse, std::size_t i) {
+  const auto& y = N.position;
+  const auto& v = N.velocity;
   Eigen::Matrix3d YX = Eigen::Matrix3d::Zero(), VX = Eigen::Matrix3d::Zero();
-  for_each_bond(fam, X, P, kind, delta, i,
+  for_each_bond(fam, N, kind, delta, i,
                 [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double w) {
-                  const Eigen::Vector3d Y(P.position[0][j] - P.position[0][i],
-                                          P.position[1][j] - P.position[1][i],
-                                          P.position[2][j] - P.position[2][i]);
-                  const Eigen::Vector3d V(P.velocity[0][j] - P.velocity[0][i],
-                                          P.velocity[1][j] - P.velocity[1][i],
-                                          P.velocity[2][j] - P.velocity[2][i]);
+                  const Eigen::Vector3d Y(y[0][j] - y[0][i], y[1][j] - y[1][i], y[2][j] - y[2][i]);
+                  const Eigen::Vector3d V(v[0][j] - v[0][i], v[1][j] - v[1][i], v[2][j] - v[2][i]);
                   YX.noalias() += w * Y * xi.transpose();
                   VX.noalias() += w * V * xi.transpose();
                 });

@@ -30,48 +30,54 @@ struct CellList {
   }
 };
 
-CellList bin(const std::array<std::vector<double>, 3>& X, const bodies::BodyRange& body,
+// The points `members` (ascending) binned.
+CellList bin(const std::array<std::vector<double>, 3>& X, const std::vector<std::uint32_t>& members,
              double cell) {
   CellList list;
   list.cell = cell;
   for (int d = 0; d < 3; ++d) {
-    const auto [lo, hi] = std::minmax_element(X[d].begin() + static_cast<long>(body.begin),
-                                              X[d].begin() + static_cast<long>(body.end));
-    list.origin[d] = *lo;
-    list.cells[d] = static_cast<long>(std::floor((*hi - *lo) / cell)) + 1;
+    double lo = X[d][members.front()], hi = lo;
+    for (const std::uint32_t p : members) {
+      lo = std::min(lo, X[d][p]);
+      hi = std::max(hi, X[d][p]);
+    }
+    list.origin[d] = lo;
+    list.cells[d] = static_cast<long>(std::floor((hi - lo) / cell)) + 1;
   }
   const std::size_t n = static_cast<std::size_t>(list.cells[0] * list.cells[1] * list.cells[2]);
   list.start.assign(n + 1, 0);
-  std::vector<std::size_t> cell_of(body.end - body.begin);
-  for (std::size_t p = body.begin; p < body.end; ++p) {
+  std::vector<std::size_t> cell_of(members.size());
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const std::uint32_t p = members[m];
     const long c = list.index(list.coordinate(X[0][p], 0), list.coordinate(X[1][p], 1),
                               list.coordinate(X[2][p], 2));
-    cell_of[p - body.begin] = static_cast<std::size_t>(c);
+    cell_of[m] = static_cast<std::size_t>(c);
     ++list.start[c + 1];
   }
   for (std::size_t c = 0; c < n; ++c) list.start[c + 1] += list.start[c];
-  list.order.resize(body.end - body.begin);
+  list.order.resize(members.size());
   std::vector<std::size_t> cursor(list.start.begin(), list.start.end() - 1);
-  for (std::size_t p = body.begin; p < body.end; ++p)
-    list.order[cursor[cell_of[p - body.begin]]++] = static_cast<std::uint32_t>(p);
+  for (std::size_t m = 0; m < members.size(); ++m) list.order[cursor[cell_of[m]]++] = members[m];
   return list;
 }
 
 }  // namespace
 
-Families build_families(const std::array<std::vector<double>, 3>& X,
-                        const std::vector<bodies::BodyRange>& bodies,
+Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange>& bodies,
                         const std::vector<double>& delta) {
-  const std::size_t n = X[0].size();
-  if (n >= std::numeric_limits<std::uint32_t>::max())
+  const std::array<std::vector<double>, 3>& X = N.reference;
+  if (N.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("peridynamics: more than 2^32 points");
   Families f;
-  f.begin.assign(n + 1, 0);
-  std::vector<std::uint32_t> found;
+  f.begin.assign(N.real + 1, 0);
+  std::vector<std::uint32_t> found, members;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const bodies::BodyRange& body = bodies[b];
     const double h = body.spacing, reach = delta[b] + 0.5 * h;
-    const CellList list = bin(X, body, reach);
+    members.clear();
+    for (std::size_t p = 0; p < N.size(); ++p)
+      if (N.body[p] == b) members.push_back(static_cast<std::uint32_t>(p));
+    const CellList list = bin(X, members, reach);
     for (std::size_t p = body.begin; p < body.end; ++p) {
       found.clear();
       const long ci = list.coordinate(X[0][p], 0), cj = list.coordinate(X[1][p], 1),

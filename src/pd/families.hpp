@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bodies/bodies.hpp"
+#include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
 
@@ -31,11 +32,11 @@ struct Families {
 // between.
 double volume_fraction(double r, double delta, double h);
 
-// Families of all points of `bodies` in their reference positions X, with horizon delta[b] for
-// body b, found with a cell list of cells delta + h/2 wide; each point's neighbours in
-// ascending index order. Throws std::length_error past 2^32 points.
-Families build_families(const std::array<std::vector<double>, 3>& X,
-                        const std::vector<bodies::BodyRange>& bodies,
+// Families of the real points of `bodies`, among the points of N (real and ghost) of the same
+// body in their reference positions, with horizon delta[b] for body b, found with a cell list of
+// cells delta + h/2 wide; each point's neighbours in ascending index order. Throws
+// std::length_error past 2^32 points.
+Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange>& bodies,
                         const std::vector<double>& delta);
 
 }  // namespace coldspray::pd

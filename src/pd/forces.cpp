@@ -6,31 +6,31 @@
 namespace coldspray::pd {
 
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
-  const bodies::Points& P = s.points;
-  const ContactLaw& law = s.contact_law[P.body[i] * s.bodies.size() + P.body[j]];
-  const Eigen::Vector3d r = vector_at(P.position, i) - vector_at(P.position, j);
+  const Neighbours& N = s.neighbours;
+  const ContactLaw& law = s.contact_law[N.body[i] * s.bodies.size() + N.body[j]];
+  const Eigen::Vector3d r = vector_at(N.position, i) - vector_at(N.position, j);
   const double length = r.norm();
   if (length >= law.distance || length == 0.0) return Eigen::Vector3d::Zero();
-  return law.stiffness * (law.distance - length) * P.volume0[j] / length * r;
+  return law.stiffness * (law.distance - length) * N.volume[j] / length * r;
 }
 
 ForceDensity force_density(const State& s, std::size_t i) {
-  const bodies::Points& P = s.points;
-  const std::size_t b = P.body[i];
+  const Neighbours& N = s.neighbours;
+  const std::size_t b = N.body[i];
   const double delta = s.body_bonds[b].horizon;
   const double control = s.settings.stabilization * s.body_bonds[b].micromodulus;
   const Eigen::Matrix3d A_i = tensor_at(s.piola_over_shape, i);
   const Eigen::Matrix3d F_i = tensor_at(s.deformation_gradient, i);
-  const Eigen::Vector3d y_i = vector_at(P.position, i);
+  const Eigen::Vector3d y_i = vector_at(N.position, i);
   Eigen::Vector3d bonds = Eigen::Vector3d::Zero(), stabilising = Eigen::Vector3d::Zero();
   for_each_bond(
-      s.families, s.reference, P, s.settings.influence, delta, i,
+      s.families, N, s.settings.influence, delta, i,
       [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double length, double w) {
         // T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi (eq 7).
         bonds.noalias() += w * (A_i + tensor_at(s.piola_over_shape, j)) * xi;
         if (control == 0.0) return;
         // The non-uniform parts z = Y - F xi seen from both ends (Silling 2017).
-        const Eigen::Vector3d Y = vector_at(P.position, j) - y_i;
+        const Eigen::Vector3d Y = vector_at(N.position, j) - y_i;
         const Eigen::Vector3d z_i = Y - F_i * xi;
         const Eigen::Vector3d z_j = Y - tensor_at(s.deformation_gradient, j) * xi;
         stabilising.noalias() += w * control / length * (z_i + z_j);

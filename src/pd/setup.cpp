@@ -10,6 +10,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "core/error.hpp"
 #include "pd/deformation.hpp"
+#include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
@@ -25,8 +26,8 @@ void invert_shape_tensors(const case_file::Case& c, State& s) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const bodies::BodyRange& body = s.bodies[b];
     for (std::size_t i = body.begin; i < body.end; ++i) {
-      const Eigen::Matrix3d K = shape_tensor(s.families, s.reference, s.points,
-                                             s.settings.influence, s.body_bonds[b].horizon, i);
+      const Eigen::Matrix3d K =
+          shape_tensor(s.families, s.neighbours, s.settings.influence, s.body_bonds[b].horizon, i);
       const Eigen::Vector3d eigen = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(K).eigenvalues();
       if (!(eigen[0] > kSingularShapeRatio * eigen[2]))
         throw InputError(
@@ -58,11 +59,22 @@ State build_state(const case_file::Case& c) {
   State s;
   s.settings = *c.peridynamics;
   s.viscosity = c.solver.artificial_viscosity;
-  const std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
+  std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
+  if (c.symmetry) {
+    s.symmetry_plane = {c.symmetry->x, c.symmetry->y};
+    std::vector<bodies::CutPlane> planes;
+    for (int axis = 0; axis < 2; ++axis)
+      if (s.symmetry_plane[axis]) planes.push_back({axis, *s.symmetry_plane[axis], true});
+    bodies::cut_at_planes(c, planes, "its symmetry planes", seeded);
+  }
   bodies::lay_out_bodies(c, seeded, s);
   const std::size_t n = s.points.size();
+  Neighbours& N = s.neighbours;
+  N.real = n;
+  N.volume = s.points.volume0;
+  N.body = s.points.body;
   for (int d = 0; d < 3; ++d) {
-    s.reference[d] = s.points.position[d];
+    N.reference[d] = s.points.position[d];
     s.acceleration[d].assign(n, 0.0);
     s.control_force[d].assign(n, 0.0);
     s.contact_force[d].assign(n, 0.0);
@@ -78,16 +90,18 @@ State build_state(const case_file::Case& c) {
     horizons.push_back(delta);
     s.min_spacing = std::min(s.min_spacing, body.spacing);
   }
-  s.families = build_families(s.reference, s.bodies, horizons);
+  add_ghosts(s);
+  refresh_neighbours(s);
+  s.families = build_families(N, s.bodies, horizons);
   s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
                       s.families.bonds()};
   s.family_size.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     s.family_size[i] = static_cast<std::uint32_t>(s.families.begin[i + 1] - s.families.begin[i]);
 
-  for (auto* field : {&s.shape_inverse, &s.deformation_gradient, &s.piola_over_shape})
-    for (auto& component : *field) component.assign(n, 0.0);
-  for (int d = 0; d < 3; ++d) s.deformation_gradient[4 * d].assign(n, 1.0);
+  s.shape_inverse.assign(n, Eigen::Matrix3d::Zero());
+  s.piola_over_shape.assign(N.size(), Eigen::Matrix3d::Zero());
+  s.deformation_gradient.assign(N.size(), Eigen::Matrix3d::Identity());
   invert_shape_tensors(c, s);
 
   s.held.assign(n, 0);
@@ -111,7 +125,7 @@ State build_state(const case_file::Case& c) {
       reach = std::max(reach, s.contact_law.back().distance);
     }
   s.contact.skin = 0.5 * s.min_spacing;
-  s.contact.build(s.points, reach + s.contact.skin);
+  s.contact.build(N, reach + s.contact.skin);
   return s;
 }
 

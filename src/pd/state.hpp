@@ -4,20 +4,24 @@
 // pairs come close than ever before).
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "pd/contact.hpp"
 #include "pd/families.hpp"
+#include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
 
-// A 3x3 tensor per point, as nine arrays, row-major: [3 * row + column].
-using TensorField = std::array<std::vector<double>, 9>;
+// A 3x3 tensor per point, each point's nine components together: the bond loops read a
+// neighbour's whole tensor at once (nine separate arrays cost nine cache lines per neighbour).
+using TensorField = std::vector<Eigen::Matrix3d>;
 
 // What a body's bonds need: its horizon delta and the bond micromodulus 18 K / (pi delta^4) of
 // its material (Silling and Askari, Comput. Struct. 83 (2005), eq 23 of the PD paper's ref 49),
@@ -27,16 +31,28 @@ struct BodyBonds {
   double micromodulus = 0.0;  // N/m^6
 };
 
+// A ghost: the image of real point `source` mirrored across the x plane (flips bit 0), the y
+// plane (bit 1) or both.
+struct Ghost {
+  std::uint32_t source = 0;
+  std::uint8_t flips = 0;
+};
+
 struct State : bodies::Bodies {
   case_file::Peridynamics settings;
   case_file::ArtificialViscosity viscosity;
   std::vector<BodyBonds> body_bonds;
 
-  Families families;
-  std::array<std::vector<double>, 3> reference;  // X, the positions at t = 0, m
-  TensorField shape_inverse;                     // K^-1 (eq 6), 1/m^5
-  TensorField deformation_gradient;              // F (eq 5)
-  // A = P K^-1 of the last force evaluation (P = J (sigma - q I) F^-T, eq 7's P), Pa/m^5.
+  // The symmetry planes' positions along x and y, if any, and the ghost points they mirror.
+  std::array<std::optional<double>, 2> symmetry_plane;
+  std::vector<Ghost> ghosts;
+  Neighbours neighbours;  // the real points, then the ghosts (their X, y, v, V0, body)
+
+  Families families;          // of the real points, into `neighbours`
+  TensorField shape_inverse;  // K^-1 (eq 6) of the real points, 1/m^5
+  // F (eq 5) and A = P K^-1 of the last force evaluation (P = J (sigma - q I) F^-T, eq 7's P,
+  // Pa/m^5), of the real points and then the ghosts.
+  TensorField deformation_gradient;
   TensorField piola_over_shape;
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
   // The parts of the last force density from the zero-energy-mode control and from contact,

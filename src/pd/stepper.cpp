@@ -12,6 +12,7 @@
 #include "materials/artificial_viscosity.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
+#include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
@@ -52,7 +53,7 @@ double update_stress(State& s) {
     const double delta = s.body_bonds[b].horizon;
     materials::visit_models(body.material, [&](const auto& models) {
       auto kinematics_of = [&](std::size_t i) {
-        const Deformation def = deformation(s.families, s.reference, P, s.settings.influence, delta,
+        const Deformation def = deformation(s.families, s.neighbours, s.settings.influence, delta,
                                             tensor_at(s.shape_inverse, i), i);
         store_tensor(def.F, s.deformation_gradient, i);
         materials::StepKinematics k;
@@ -104,6 +105,9 @@ void accelerate(State& s) {
       s.control_force[d][i] = f.control[d];
       s.contact_force[d][i] = f.contact[d];
     }
+    // The points another body pushes on: the contact area of the impact metrics.
+    P.touching[i] = f.contact.squaredNorm() > 0.0;
+    P.touched[i] |= P.touching[i];
     const double rho0 = s.bodies[P.body[i]].material.density;
     for (int d = 0; d < 3; ++d)
       s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : f.total()[d] / rho0;
@@ -146,7 +150,7 @@ void sum_contact_impulses(State& s) {
     for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
       const std::size_t j = s.contact.other[c];
       const Eigen::Vector3d f = contact_force(s, i, j) * (s.points.volume0[i] * s.dt);
-      auto& impulse = s.contact_impulse[s.points.body[i] * m + s.points.body[j]];
+      auto& impulse = s.contact_impulse[s.points.body[i] * m + s.neighbours.body[j]];
       for (int d = 0; d < 3; ++d) impulse[d] += f[d];
     }
 }
@@ -160,13 +164,15 @@ double stable_time_step(const State& s, double cfl) {
 void step(State& s) {
   kick(s);   // v^{n+1/2}
   drift(s);  // x^{n+1}
-  if (s.contact.stale(s.points)) {
+  refresh_neighbours(s);
+  if (s.contact.stale(s.neighbours)) {
     double reach = 0.0;
     for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.distance);
-    s.contact.build(s.points, reach + s.contact.skin);
+    s.contact.build(s.neighbours, reach + s.contact.skin);
   }
   s.max_signal_speed = update_stress(s);
   bodies::raise_recorded_fault(s);
+  refresh_ghost_tensors(s);
   accelerate(s);  // a^{n+1}
   kick(s);        // v^{n+1}
   book_works(s);

@@ -15,6 +15,7 @@
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
 #include "pd/setup.hpp"
+#include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
@@ -53,7 +54,8 @@ TEST(PeridynamicFamilies, MatchABruteForceSearch) {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;
       double r2 = 0.0;
-      for (int d = 0; d < 3; ++d) r2 += std::pow(s.reference[d][j] - s.reference[d][i], 2);
+      for (int d = 0; d < 3; ++d)
+        r2 += std::pow(s.neighbours.reference[d][j] - s.neighbours.reference[d][i], 2);
       const double beta = volume_fraction(std::sqrt(r2), delta, h);
       if (beta == 0.0) continue;
       ASSERT_LT(b, s.families.begin[i + 1]) << "point " << i;
@@ -97,13 +99,15 @@ TEST(PeridynamicFamilies, PartialVolumeAcrossTheHorizonEdge) {
 // y = F0 X + c and v = L0 y at every point.
 void deform(State& s, const Eigen::Matrix3d& F0, const Eigen::Matrix3d& L0) {
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    const Eigen::Vector3d y = F0 * vector_at(s.reference, i) + Eigen::Vector3d(1e-7, -2e-7, 3e-7);
+    const Eigen::Vector3d y =
+        F0 * vector_at(s.neighbours.reference, i) + Eigen::Vector3d(1e-7, -2e-7, 3e-7);
     const Eigen::Vector3d v = L0 * y;
     for (int d = 0; d < 3; ++d) {
       s.points.position[d][i] = y[d];
       s.points.velocity[d][i] = v[d];
     }
   }
+  refresh_neighbours(s);
 }
 
 TEST(PeridynamicKinematics, HomogeneousDeformationGivesTheExactGradientAtEveryPoint) {
@@ -115,7 +119,7 @@ TEST(PeridynamicKinematics, HomogeneousDeformationGivesTheExactGradientAtEveryPo
     deform(s, F0, L0);
     double worst_F = 0.0, worst_Fdot = 0.0;
     for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const Deformation d = deformation(s.families, s.reference, s.points, s.settings.influence,
+      const Deformation d = deformation(s.families, s.neighbours, s.settings.influence,
                                         s.body_bonds[0].horizon, tensor_at(s.shape_inverse, i), i);
       worst_F = std::max(worst_F, (d.F - F0).cwiseAbs().maxCoeff());
       worst_Fdot = std::max(worst_Fdot, (d.Fdot - L0 * F0).cwiseAbs().maxCoeff() / 2e6);
@@ -128,7 +132,7 @@ TEST(PeridynamicKinematics, HomogeneousDeformationGivesTheExactGradientAtEveryPo
 // Sets every point's F from its family, and A = P K^-1 from a given uniform Cauchy stress.
 void set_gradients(State& s, const Eigen::Matrix3d& sigma) {
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    const Deformation d = deformation(s.families, s.reference, s.points, s.settings.influence,
+    const Deformation d = deformation(s.families, s.neighbours, s.settings.influence,
                                       s.body_bonds[0].horizon, tensor_at(s.shape_inverse, i), i);
     store_tensor(d.F, s.deformation_gradient, i);
     const Eigen::Matrix3d A =
@@ -140,8 +144,10 @@ void set_gradients(State& s, const Eigen::Matrix3d& sigma) {
 // Interior points: a horizon away from every face.
 bool interior(const State& s, std::size_t i) {
   const double delta = s.body_bonds[0].horizon, max[3] = {3e-6, 2.5e-6, 2e-6};
-  for (int d = 0; d < 3; ++d)
-    if (s.reference[d][i] < delta + 1e-9 || s.reference[d][i] > max[d] - delta - 1e-9) return false;
+  for (int d = 0; d < 3; ++d) {
+    const double x = s.neighbours.reference[d][i];
+    if (x < delta + 1e-9 || x > max[d] - delta - 1e-9) return false;
+  }
   return true;
 }
 
@@ -152,9 +158,10 @@ TEST(PeridynamicControl, ResistsAZeroEnergyModeAndLeavesHomogeneousDeformationAl
   // eq 5 cancel and F = I at interior points, a deformation the correspondence force cannot see.
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     long parity = 0;
-    for (int d = 0; d < 3; ++d) parity += std::lround(s.reference[d][i] / h - 0.5);
+    for (int d = 0; d < 3; ++d) parity += std::lround(s.neighbours.reference[d][i] / h - 0.5);
     s.points.position[0][i] += (parity % 2 == 0 ? 1.0 : -1.0) * amplitude;
   }
+  refresh_neighbours(s);
   set_gradients(s, Eigen::Matrix3d::Zero());
   std::size_t checked = 0;
   for (std::size_t i = 0; i < s.points.size(); ++i) {
@@ -163,7 +170,7 @@ TEST(PeridynamicControl, ResistsAZeroEnergyModeAndLeavesHomogeneousDeformationAl
     EXPECT_LT((tensor_at(s.deformation_gradient, i) - Eigen::Matrix3d::Identity()).norm(), 1e-12);
     const ForceDensity f = force_density(s, i);
     EXPECT_EQ(f.bonds.norm(), 0.0);
-    const double u = s.points.position[0][i] - s.reference[0][i];
+    const double u = s.points.position[0][i] - s.neighbours.reference[0][i];
     EXPECT_LT(f.control[0] * u, 0.0) << "point " << i << ": the control must restore";
   }
   EXPECT_GT(checked, 20u);

@@ -1,0 +1,24 @@
+// The points that families and contacts reach: the real points, then the ghosts, the mirror
+// images of real points across the symmetry planes (pd/symmetry.hpp). Indices below the real
+// count are the points' own; the arrays are refreshed from the points every step.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace coldspray::pd {
+
+struct Neighbours {
+  std::size_t real = 0;                          // the real points: [0, real)
+  std::array<std::vector<double>, 3> reference;  // X, m
+  std::array<std::vector<double>, 3> position;   // y, m
+  std::array<std::vector<double>, 3> velocity;   // v, m/s
+  std::vector<double> volume;                    // V0, m^3
+  std::vector<std::uint16_t> body;
+
+  std::size_t size() const { return volume.size(); }
+};
+
+}  // namespace coldspray::pd
