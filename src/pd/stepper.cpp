@@ -19,15 +19,22 @@ namespace coldspray::pd {
 
 namespace {
 
-// v += dt/2 a at every point (a held point stays at rest).
+// v += dt/2 a at every point. A held component stays at zero; the kinetic energy a hold takes
+// (once, when a moving face is first held) goes to the budget's contact entry, as the MPM books
+// the velocity corrections of its contact and held nodes.
 void kick(State& s) {
   bodies::Points& P = s.points;
   const double half = 0.5 * s.dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < P.size(); ++i)
-    for (int d = 0; d < 3; ++d)
-      P.velocity[d][i] =
-          (s.held[i] >> d & 1) ? 0.0 : P.velocity[d][i] + half * s.acceleration[d][i];
+    for (int d = 0; d < 3; ++d) {
+      if (s.held[i] >> d & 1) {
+        P.contact_work[i] -= 0.5 * P.mass[i] * P.velocity[d][i] * P.velocity[d][i];
+        P.velocity[d][i] = 0.0;
+      } else {
+        P.velocity[d][i] += half * s.acceleration[d][i];
+      }
+    }
 }
 
 // x += dt v.
