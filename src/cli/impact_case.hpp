@@ -30,13 +30,19 @@ SubstrateSize substrate_size(double particle_diameter);
 
 enum class Symmetry { Quarter, None };
 
+// The PD paper's discretisation of its 30 um particle: about 50 points across (its "1/50 of the
+// particle's diameter"), the default spacing of `impact --solver peridynamics`.
+inline constexpr double kPeridynamicsPointsAcross = 50.0;
+
 // What `coldspray impact` was asked for; SI units.
 struct ImpactSpec {
+  case_file::Method solver = case_file::Method::Mpm;
   std::string material;
   std::string substrate_material;  // empty: the particle's material
   double diameter = 0.0;           // particle diameter, m
   double speed = 0.0;              // towards the substrate (along -z), m/s; > 0
-  double cell_size = 0.7e-6;       // m; thesis' recommended 0.7/0.175 um configuration (§5.1.3)
+  double cell_size = 0.7e-6;       // m; thesis' recommended 0.7/0.175 um configuration (§5.1.3);
+                                   // 0 with peridynamics
   double spacing = 0.175e-6;       // m
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   Symmetry symmetry = Symmetry::Quarter;       // in 3D: model one quarter

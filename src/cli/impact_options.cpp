@@ -31,22 +31,30 @@ double positive(const std::string& option, const std::string& text,
 
 void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
                              const std::function<void()>& particle_options) {
-  sub.add_option("--material", o.material, "Particle material (built-in NAME)")->required();
+  sub.add_option("--solver", o.solver,
+                 "mpm, or peridynamics: the PD paper's set-up (docs/impact.md)")
+      ->check(CLI::IsMember({"mpm", "peridynamics"}))
+      ->capture_default_str();
+  sub.add_option(
+      "--material", o.material,
+      "Particle material (built-in NAME); required with the MPM, cu-jc for peridynamics");
   sub.add_option("--substrate-material", o.substrate_material,
                  "Substrate material (default: the particle's)");
   particle_options();
-  sub.add_option("--grid", o.grid, "Grid cell / point spacing (thesis §5.1.3)")
+  sub.add_option("--grid", o.grid, "MPM: grid cell / point spacing (thesis §5.1.3)")
       ->capture_default_str();
-  sub.add_option("--geometry", o.geometry, "axisymmetric (r-z) or 3d")
-      ->check(CLI::IsMember({"axisymmetric", "3d"}))
-      ->capture_default_str();
+  sub.add_option("--spacing", o.spacing,
+                 "Peridynamics: point spacing (default: the diameter / 50, as the PD paper)");
+  sub.add_option("--geometry", o.geometry,
+                 "axisymmetric (r-z) or 3d; default axisymmetric (MPM), 3d (peridynamics)")
+      ->check(CLI::IsMember({"axisymmetric", "3d"}));
   sub.add_option("--symmetry", o.symmetry,
                  "3D: model one quarter (symmetry planes x = 0, y = 0) or the whole")
       ->check(CLI::IsMember({"quarter", "none"}))
       ->capture_default_str();
-  sub.add_option("--bonding", o.bonding, "Bonding model (thesis Chapter 4)")
-      ->check(CLI::IsMember({"none", "strain", "energy"}))
-      ->capture_default_str();
+  sub.add_option("--bonding", o.bonding,
+                 "Bonding model (thesis Chapter 4); default energy (MPM), none (peridynamics)")
+      ->check(CLI::IsMember({"none", "strain", "energy"}));
   sub.add_option("--Gc", o.gc, "Critical adhesion energy, e.g. 400J/m^2 (eq 4.16b)");
   sub.add_option("--Gc-rate", o.gc_rate, "Critical energy rate, e.g. 2.8e5J/m^2/us");
   sub.add_option("--eps-c", o.eps_c, "Critical strain (strain model, eq 4.4)");
@@ -61,7 +69,8 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
 std::string calibration_warning(const ImpactCaseOptions& o) {
   constexpr std::string_view kCalibrated = "al-ptw";
   const std::string& substrate = o.substrate_material.empty() ? o.material : o.substrate_material;
-  if (o.bonding != "energy" || (!o.gc.empty() && !o.gc_rate.empty()) ||
+  if (o.solver != "mpm" || !(o.bonding.empty() || o.bonding == "energy") ||
+      (!o.gc.empty() && !o.gc_rate.empty()) ||
       (o.material == kCalibrated && substrate == kCalibrated))
     return "";
   return fmt::format(
@@ -101,6 +110,32 @@ double parse_speed(const std::string& option, const std::string& text) {
   return positive(option, text, units::kVelocity, "the impact speed towards the substrate must be");
 }
 
+namespace {
+
+// The PD paper's set-up (docs/impact.md): cu-jc, 3D, no bonding model, the spacing D / 50.
+void peridynamics_spec(const ImpactCaseOptions& o, ImpactSpec& spec) {
+  spec.solver = case_file::Method::Peridynamics;
+  if (spec.material.empty()) spec.material = "cu-jc";
+  if (o.geometry == "axisymmetric")
+    throw InputError("--geometry", "", "peridynamics runs in 3d only");
+  spec.geometry = case_file::Geometry::ThreeD;
+  if (!(o.bonding.empty() || o.bonding == "none"))
+    throw InputError("--bonding", "",
+                     "the direct bonding model is the MPM's: with --solver peridynamics, none");
+  spec.bonding = "none";
+  spec.spacing = o.spacing.empty() ? spec.diameter / kPeridynamicsPointsAcross
+                                   : positive("--spacing", o.spacing, units::kLength, "must be");
+  if (spec.spacing > spec.diameter / 4.0)
+    throw InputError(
+        "--spacing", "",
+        fmt::format("the spacing ({:.4g} um) must be at most a quarter of the particle "
+                    "diameter ({:.4g} um), for a family across it",
+                    spec.spacing * 1e6, spec.diameter * 1e6));
+  spec.cell_size = 0.0;
+}
+
+}  // namespace
+
 ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
                        const std::string& command) {
   ImpactSpec spec;
@@ -108,16 +143,25 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
   spec.substrate_material = o.substrate_material;
   spec.diameter = diameter;
   spec.speed = speed;
-  try {
-    std::tie(spec.cell_size, spec.spacing) = parse_grid(o.grid);
-  } catch (const UnitError& e) {
-    throw InputError("--grid", "", e.what());
-  }
-  check_cell_fits(spec.cell_size, spec.diameter, "--grid");
-  spec.geometry =
-      o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
   spec.symmetry = o.symmetry == "none" ? Symmetry::None : Symmetry::Quarter;
-  spec.bonding = o.bonding;
+  if (o.solver == "peridynamics") {
+    peridynamics_spec(o, spec);
+  } else {
+    if (spec.material.empty())
+      throw InputError("--material", "", "required with --solver mpm (a built-in material NAME)");
+    if (!o.spacing.empty())
+      throw InputError("--spacing", "",
+                       "is peridynamics' option: the MPM takes --grid CELL/SPACING");
+    try {
+      std::tie(spec.cell_size, spec.spacing) = parse_grid(o.grid);
+    } catch (const UnitError& e) {
+      throw InputError("--grid", "", e.what());
+    }
+    check_cell_fits(spec.cell_size, spec.diameter, "--grid");
+    spec.geometry =
+        o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
+    spec.bonding = o.bonding.empty() ? "energy" : o.bonding;
+  }
   spec.critical_energy = optional_quantity("--Gc", o.gc, units::kEnergyPerArea);
   spec.critical_energy_rate =
       optional_quantity("--Gc-rate", o.gc_rate, units::kEnergyPerAreaPerTime);

@@ -15,14 +15,18 @@
 namespace coldspray::cli {
 
 // Everything but the particle's diameter and speed, as given on the command line.
+// Empty --material, --geometry and --bonding take the solver's defaults: al-ptw is not one (the
+// MPM needs --material), cu-jc, 3d and none for peridynamics (the PD paper's set-up).
 struct ImpactCaseOptions {
-  std::string material, substrate_material, grid = "0.7um/0.175um";
-  std::string geometry = "axisymmetric", symmetry = "quarter", bonding = "energy";
+  std::string solver = "mpm";
+  std::string material, substrate_material, grid = "0.7um/0.175um", spacing;
+  std::string geometry, symmetry = "quarter", bonding;
   std::string gc, gc_rate, eps_c, eps_c_rate, floor;
   std::string end_time = "80ns", shape_function = "gimp";
 };
 
-// --material (required), --substrate-material, --grid, --geometry, --symmetry, --bonding, --Gc,
+// --solver, --material (required with the MPM), --substrate-material, --grid (MPM), --spacing
+// (PD), --geometry, --symmetry, --bonding, --Gc,
 // --Gc-rate, --eps-c, --eps-c-rate, --floor, --end-time, --shape-function; `o` must outlive
 // the parse. `particle_options` is called after the materials, to add the caller's options for
 // the particle's size and speed there (their place in --help and in generated headers).

@@ -141,6 +141,51 @@ TEST(Impact, ThreeDIsAQuarterModelOnSymmetryPlanes) {
   EXPECT_EQ(whole.grid->faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Free);
 }
 
+// --solver peridynamics: the PD paper's set-up (its "Simulation Setup"): cu-jc by default, a
+// cylinder of radius and height 4 particle radii, bottom fixed, side restrained, D / 50
+// spacing, a quarter by symmetry planes.
+TEST(Impact, PeridynamicsBuildsThePdPapersSetUp) {
+  const case_file::Case c =
+      written_case("impact --solver peridynamics --diameter 30um --velocity 500m/s");
+  EXPECT_EQ(c.solver.method, case_file::Method::Peridynamics);
+  EXPECT_EQ(c.solver.geometry, case_file::Geometry::ThreeD);
+  EXPECT_EQ(c.bodies.at(0).material, "cu-jc");
+  EXPECT_EQ(c.bodies.at(1).material, "cu-jc");
+  EXPECT_NEAR(c.bodies.at(0).spacing, 0.6e-6, 1e-15);
+  const auto& cylinder = std::get<case_file::Cylinder>(c.bodies.at(1).shape);
+  EXPECT_NEAR(cylinder.radius, 60e-6, 1e-15);
+  EXPECT_NEAR(cylinder.height, 60e-6, 1e-15);
+  EXPECT_NEAR(cylinder.base_center.z(), -60e-6, 1e-15);
+  EXPECT_EQ(c.bodies.at(1).fixed, std::vector<case_file::BodyFace>{case_file::BodyFace::Bottom});
+  EXPECT_EQ(c.bodies.at(1).roller, std::vector<case_file::BodyFace>{case_file::BodyFace::Side});
+  ASSERT_TRUE(c.symmetry.has_value());
+  EXPECT_EQ(c.symmetry->x, 0.0);
+  EXPECT_EQ(c.symmetry->y, 0.0);
+  EXPECT_EQ(c.bonding.model, case_file::BondingModel::None);
+  EXPECT_FALSE(c.grid.has_value());
+
+  const case_file::Case whole = written_case(
+      "impact --solver peridynamics --diameter 30um --velocity 500m/s --symmetry none "
+      "--spacing 1um --material al-jc");
+  EXPECT_FALSE(whole.symmetry.has_value());
+  EXPECT_NEAR(whole.bodies.at(1).spacing, 1e-6, 1e-15);
+  EXPECT_EQ(whole.bodies.at(1).material, "al-jc");
+}
+
+TEST(Impact, SolverOptionsThatDoNotFitAreBadInput) {
+  const std::string pd = "impact --solver peridynamics --diameter 10um --velocity 500m/s";
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {pd + " --bonding energy", "--bonding: the direct bonding model is the MPM's"},
+           {pd + " --geometry axisymmetric", "--geometry: peridynamics runs in 3d only"},
+           {pd + " --spacing 5um", "--spacing: the spacing (5 um) must be at most a quarter"},
+           {"impact --diameter 10um --velocity 500m/s", "--material: required with --solver mpm"},
+           {kCase22 + " --spacing 1um", "--spacing: is peridynamics' option"}}) {
+    const auto r = run_coldspray(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+  }
+}
+
 TEST(Impact, UnknownMaterialNamesTheOption) {
   const std::string dir = make_temp_dir("impact");
   const auto r =
