@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <string>
 
@@ -30,9 +29,20 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"cli", {"core", "case", "io", "material_test", "mpm", "run", "studies"}},
 };
 
+// The folder of a line `#include "folder/file.hpp"`, or "" for any other line. (Not std::regex:
+// GCC 12 warns inside <regex> under the sanitizer build's -O2.)
+std::string included_folder(const std::string& line) {
+  const std::string directive = "#include \"";
+  const std::size_t start = line.find_first_not_of(" \t");
+  if (start == std::string::npos || line.compare(start, directive.size(), directive) != 0)
+    return "";
+  const std::size_t name = start + directive.size(), slash = line.find('/', name);
+  if (slash == std::string::npos) return "";
+  return line.substr(name, slash - name);
+}
+
 TEST(Layering, EveryIncludeStaysWithinItsLayers) {
   const std::filesystem::path src = std::filesystem::path(COLDSPRAY_SOURCE_DIR) / "src";
-  const std::regex include(R"(^\s*#include\s+"([a-z_]+)/)");
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(src)) {
     if (!entry.is_regular_file()) continue;
@@ -43,9 +53,8 @@ TEST(Layering, EveryIncludeStaysWithinItsLayers) {
     std::ifstream in(entry.path());
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
-      std::smatch m;
-      if (!std::regex_search(line, m, include)) continue;
-      const std::string target = m[1];
+      const std::string target = included_folder(line);
+      if (target.empty()) continue;
       EXPECT_TRUE(target == folder || allowed->second.count(target) != 0)
           << entry.path().lexically_relative(src).string() << ":" << n << " includes " << target
           << "/, outside the layers of src/" << folder << "/";
