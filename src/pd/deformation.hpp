@@ -10,6 +10,7 @@
 #include "case/case.hpp"
 #include "pd/families.hpp"
 #include "pd/neighbours.hpp"
+#include "pd/quadratic_fit.hpp"
 
 namespace coldspray::pd {
 
@@ -43,26 +44,43 @@ inline Eigen::Matrix3d shape_tensor(const Families& fam, const Neighbours& N,
   return K;
 }
 
+// The moment matrix of the second-order fit (pd/quadratic_fit.hpp): M = sum omega q (x) q V_j.
+inline MomentMatrix moment_matrix(const Families& fam, const Neighbours& N,
+                                  case_file::Influence kind, double delta, std::size_t i) {
+  MomentMatrix M = MomentMatrix::Zero();
+  for_each_bond(fam, N, kind, delta, i,
+                [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double, double w) {
+                  const Monomials q = monomials(xi, delta);
+                  M.noalias() += w * q * q.transpose();
+                });
+  return M;
+}
+
 struct Deformation {
   Eigen::Matrix3d F;     // eq 5
   Eigen::Matrix3d Fdot;  // its rate, the same sum over the velocity state
+  QuadraticMap fit;      // the second-order fit of the positions (pd/quadratic_fit.hpp)
 };
 
 // Eq 5, F = [sum omega Y (x) xi V_j] K^-1 with Y = y_j - y_i in the current positions, and
-// Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28).
+// Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28). The same sum
+// over the bonds' monomials q gives the second-order fit C = [sum omega Y (x) q V_j] M^-1; the
+// first three monomials are xi / delta, so the sum of eq 5 is delta times its first columns.
 inline Deformation deformation(const Families& fam, const Neighbours& N, case_file::Influence kind,
-                               double delta, const Eigen::Matrix3d& K_inverse, std::size_t i) {
+                               double delta, const Eigen::Matrix3d& K_inverse,
+                               const MomentMatrix& M_inverse, std::size_t i) {
   const auto& y = N.position;
   const auto& v = N.velocity;
-  Eigen::Matrix3d YX = Eigen::Matrix3d::Zero(), VX = Eigen::Matrix3d::Zero();
+  QuadraticMap YQ = QuadraticMap::Zero();
+  Eigen::Matrix3d VX = Eigen::Matrix3d::Zero();
   for_each_bond(fam, N, kind, delta, i,
                 [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double w) {
                   const Eigen::Vector3d Y(y[0][j] - y[0][i], y[1][j] - y[1][i], y[2][j] - y[2][i]);
                   const Eigen::Vector3d V(v[0][j] - v[0][i], v[1][j] - v[1][i], v[2][j] - v[2][i]);
-                  YX.noalias() += w * Y * xi.transpose();
+                  YQ.noalias() += (w * Y) * monomials(xi, delta).transpose();
                   VX.noalias() += w * V * xi.transpose();
                 });
-  return {YX * K_inverse, VX * K_inverse};
+  return {delta * YQ.leftCols<3>() * K_inverse, VX * K_inverse, YQ * M_inverse};
 }
 
 }  // namespace coldspray::pd

@@ -1,6 +1,7 @@
 #include "pd/forces.hpp"
 
 #include "pd/deformation.hpp"
+#include "pd/quadratic_fit.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
@@ -20,7 +21,7 @@ ForceDensity force_density(const State& s, std::size_t i) {
   const double delta = s.body_bonds[b].horizon;
   const double control = s.settings.stabilization * s.body_bonds[b].micromodulus;
   const Eigen::Matrix3d A_i = tensor_at(s.piola_over_shape, i);
-  const Eigen::Matrix3d F_i = tensor_at(s.deformation_gradient, i);
+  const QuadraticMap& C_i = s.quadratic_fit[i];
   const Eigen::Vector3d y_i = vector_at(N.position, i);
   Eigen::Vector3d bonds = Eigen::Vector3d::Zero(), stabilising = Eigen::Vector3d::Zero();
   for_each_bond(
@@ -29,10 +30,13 @@ ForceDensity force_density(const State& s, std::size_t i) {
         // T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi (eq 7).
         bonds.noalias() += w * (A_i + tensor_at(s.piola_over_shape, j)) * xi;
         if (control == 0.0) return;
-        // The non-uniform parts z = Y - F xi seen from both ends (Silling 2017).
+        // The non-uniform parts z of the bond (Silling 2017), measured against each end's
+        // second-order fit: z_i = Y - C_i q(xi) at i, and at j, with the sign of i's side,
+        // Y + C_j q(-xi).
         const Eigen::Vector3d Y = vector_at(N.position, j) - y_i;
-        const Eigen::Vector3d z_i = Y - F_i * xi;
-        const Eigen::Vector3d z_j = Y - tensor_at(s.deformation_gradient, j) * xi;
+        const Monomials q = monomials(xi, delta);
+        const Eigen::Vector3d z_i = Y - C_i * q;
+        const Eigen::Vector3d z_j = Y + s.quadratic_fit[j] * reversed(q);
         stabilising.noalias() += w * control / length * (z_i + z_j);
       });
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();

@@ -16,8 +16,9 @@ struct ForceDensity {
 };
 
 // Eq 8 at point i: sum over its family of T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi V_j;
-// the control: G_s c / |xi| omega (z_i + z_j) V_j with z = Y - F xi seen from either end, zero
-// under any homogeneous deformation; the contacts: sum over the points of other bodies nearby.
+// the control: G_s c / |xi| omega (z_i + z_j) V_j with z = Y - C q(xi) seen from either end
+// (C each end's second-order fit, pd/quadratic_fit.hpp), zero under any deformation up to
+// quadratic order, at surfaces too; the contacts: sum over the points of other bodies nearby.
 ForceDensity force_density(const State& s, std::size_t i);
 
 // The short-range repulsion on i from j (pd/contact.hpp), N/m^3: zero beyond the contact

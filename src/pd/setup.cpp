@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -21,23 +22,34 @@ namespace {
 // family that does not span three dimensions: F would not be defined (eq 5).
 constexpr double kSingularShapeRatio = 1e-8;
 
-// Eq 6 at every point, inverted; throws InputError for a singular one.
-void invert_shape_tensors(const case_file::Case& c, State& s) {
+// True if the symmetric matrix's smallest eigenvalue is below kSingularShapeRatio of its largest.
+template <class Matrix>
+bool singular(const Matrix& M) {
+  const auto eigen = Eigen::SelfAdjointEigenSolver<Matrix>(M).eigenvalues();
+  return !(eigen[0] > kSingularShapeRatio * eigen[eigen.size() - 1]);
+}
+
+// Eq 6 and the second-order fit's moment matrix (pd/quadratic_fit.hpp) at every point,
+// inverted; throws InputError for a singular one.
+void invert_moments(const case_file::Case& c, State& s) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const bodies::BodyRange& body = s.bodies[b];
+    const double delta = s.body_bonds[b].horizon;
     for (std::size_t i = body.begin; i < body.end; ++i) {
       const Eigen::Matrix3d K =
-          shape_tensor(s.families, s.neighbours, s.settings.influence, s.body_bonds[b].horizon, i);
-      const Eigen::Vector3d eigen = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(K).eigenvalues();
-      if (!(eigen[0] > kSingularShapeRatio * eigen[2]))
+          shape_tensor(s.families, s.neighbours, s.settings.influence, delta, i);
+      const MomentMatrix M =
+          moment_matrix(s.families, s.neighbours, s.settings.influence, delta, i);
+      if (singular(K) || singular(M))
         throw InputError(
             c.source_file, fmt::format("bodies.{}.spacing", body.name),
             fmt::format("point {} of body '{}' has a family of {} neighbours that does not span "
-                        "three dimensions (singular shape tensor, PD paper eq 6): give the body "
-                        "more points across its thinnest part or a larger "
+                        "three dimensions (singular shape tensor, PD paper eq 6, or moment "
+                        "matrix): give the body more points across its thinnest part or a larger "
                         "peridynamics.horizon_factor",
                         i - body.begin, body.name, s.family_size[i]));
       store_tensor(K.inverse(), s.shape_inverse, i);
+      s.moment_inverse[i] = M.inverse();
     }
   }
 }
@@ -100,9 +112,11 @@ State build_state(const case_file::Case& c) {
     s.family_size[i] = static_cast<std::uint32_t>(s.families.begin[i + 1] - s.families.begin[i]);
 
   s.shape_inverse.assign(n, Eigen::Matrix3d::Zero());
+  s.moment_inverse.assign(n, MomentMatrix::Zero());
+  s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
   s.piola_over_shape.assign(N.size(), Eigen::Matrix3d::Zero());
-  s.deformation_gradient.assign(N.size(), Eigen::Matrix3d::Identity());
-  invert_shape_tensors(c, s);
+  s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());
+  invert_moments(c, s);
 
   s.held.assign(n, 0);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {

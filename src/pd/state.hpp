@@ -16,6 +16,7 @@
 #include "pd/contact.hpp"
 #include "pd/families.hpp"
 #include "pd/neighbours.hpp"
+#include "pd/quadratic_fit.hpp"
 
 namespace coldspray::pd {
 
@@ -50,10 +51,13 @@ struct State : bodies::Bodies {
 
   Families families;          // of the real points, into `neighbours`
   TensorField shape_inverse;  // K^-1 (eq 6) of the real points, 1/m^5
-  // F (eq 5) and A = P K^-1 of the last force evaluation (P = J (sigma - q I) F^-T, eq 7's P,
-  // Pa/m^5), of the real points and then the ghosts.
-  TensorField deformation_gradient;
+  // M^-1 of the second-order fit (pd/quadratic_fit.hpp) of the real points, 1/m^3.
+  std::vector<MomentMatrix> moment_inverse;
+  TensorField deformation_gradient;  // F (eq 5) of the last force evaluation, real points
+  // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
+  // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
   TensorField piola_over_shape;
+  std::vector<QuadraticMap> quadratic_fit;
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
   // The parts of the last force density from the zero-energy-mode control and from contact,
   // N/m^3, whose work the step books once the velocities are those of the step's end.

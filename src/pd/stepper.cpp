@@ -61,8 +61,9 @@ double update_stress(State& s) {
     materials::visit_models(body.material, [&](const auto& models) {
       auto kinematics_of = [&](std::size_t i) {
         const Deformation def = deformation(s.families, s.neighbours, s.settings.influence, delta,
-                                            tensor_at(s.shape_inverse, i), i);
+                                            tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
         store_tensor(def.F, s.deformation_gradient, i);
+        s.quadratic_fit[i] = def.fit;
         materials::StepKinematics k;
         k.set_velocity_gradient(def.Fdot * def.F.inverse(), dt);  // eqs 28-29
         k.J_new = def.F.determinant();

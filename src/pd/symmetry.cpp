@@ -62,8 +62,8 @@ void refresh_ghost_tensors(State& s) {
     const Ghost& ghost = s.ghosts[g];
     const Eigen::Matrix3d R = reflection(ghost.flips);
     const std::size_t j = s.neighbours.real + g, i = ghost.source;
-    s.deformation_gradient[j] = R * s.deformation_gradient[i] * R;
     s.piola_over_shape[j] = R * s.piola_over_shape[i] * R;
+    s.quadratic_fit[j] = mirrored(s.quadratic_fit[i], ghost.flips);
   }
 }
 
