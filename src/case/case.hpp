@@ -76,12 +76,16 @@ enum class ShapeFunction { Linear, Gimp };
 
 using materials::ArtificialViscosity;
 
+// The default time-step fraction of peridynamics: 0.7 of the bond-based bound (docs/pd.md,
+// "Time step"); the MPM's is Solver::cfl's.
+inline constexpr double kPeridynamicsCfl = 0.6;
+
 struct Solver {
   Method method = Method::Mpm;
   Geometry geometry = Geometry::ThreeD;
   ShapeFunction shape_function = ShapeFunction::Gimp;
   double end_time = 0.0;           // s
-  double cfl = 0.3;                // dt = cfl h / max(c + |v|)
+  double cfl = 0.3;                // dt = cfl h / max(c + |v|); kPeridynamicsCfl for PD
   std::optional<double> dt_scale;  // alternative: fraction of the critical step (thesis §5.1.4)
   ArtificialViscosity artificial_viscosity;
   // Fourier heat conduction between points, with the materials' thermal_conductivity

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 #include "case/case_materials.hpp"
 #include "case/case_schema.hpp"
@@ -24,7 +25,12 @@ Case read_case(Document& doc, const std::vector<Override>& overrides) {
   Reader::read(doc, doc.root(), "", c);
   c.source_file = doc.name();
   resolve_body_materials(doc, c);
-  if (c.solver.method == Method::Peridynamics && !c.peridynamics) c.peridynamics.emplace();
+  if (c.solver.method == Method::Peridynamics) {
+    if (!c.peridynamics) c.peridynamics.emplace();
+    // PD's own default time-step fraction, when the case gives none (docs/pd.md, "Time step").
+    const YAML::Node& root = std::as_const(doc).root();
+    if (!(root["solver"] && root["solver"]["cfl"])) c.solver.cfl = kPeridynamicsCfl;
+  }
   check_consistency(doc, c);
   return c;
 }

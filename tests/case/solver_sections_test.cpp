@@ -79,5 +79,19 @@ TEST(SolverSections, ACaseWithBothSectionsRunsOnEither) {
   EXPECT_EQ(*d.peridynamics, Peridynamics{});
 }
 
+// Each solver has its own default time-step fraction (docs/pd.md, "Time step"); a given one,
+// in the file or by --set, is kept.
+TEST(SolverSections, TheDefaultTimeStepFractionIsTheSolvers) {
+  EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml")).solver.cfl, 0.6);
+  EXPECT_EQ(load_case(example("verification/sliding-impact-3d.yaml")).solver.cfl, 0.3);
+  EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml"), {{"solver.cfl", "0.3"}})
+                .solver.cfl,
+            0.3);
+  EXPECT_EQ(load_case(example("verification/plate-impact-al-500.yaml"),
+                      {{"solver.method", "peridynamics"}, {"solver.geometry", "3d"}})
+                .solver.cfl,
+            0.3);  // the file's own cfl: 0.3
+}
+
 }  // namespace
 }  // namespace coldspray::case_file
