@@ -56,6 +56,25 @@ inline MomentMatrix moment_matrix(const Families& fam, const Neighbours& N,
   return M;
 }
 
+// Sums over a point's family that do not change (pd/forces.hpp): sum omega xi V_j, the factor
+// of A_i in eq 8 (zero on a symmetric family), and sum omega q(xi) / |xi| V_j, the factor of C_i
+// in the control.
+struct FamilySums {
+  Eigen::Vector3d bond = Eigen::Vector3d::Zero();  // m^4
+  Monomials control = Monomials::Zero();           // m^2
+};
+
+inline FamilySums family_sums(const Families& fam, const Neighbours& N, case_file::Influence kind,
+                              double delta, std::size_t i) {
+  FamilySums sums;
+  for_each_bond(fam, N, kind, delta, i,
+                [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double length, double w) {
+                  sums.bond += w * xi;
+                  sums.control += w / length * monomials(xi, delta);
+                });
+  return sums;
+}
+
 struct Deformation {
   Eigen::Matrix3d F;     // eq 5
   Eigen::Matrix3d Fdot;  // its rate, the same sum over the velocity state
@@ -80,7 +99,7 @@ inline Deformation deformation(const Families& fam, const Neighbours& N, case_fi
                   YQ.noalias() += (w * Y) * monomials(xi, delta).transpose();
                   VX.noalias() += w * V * xi.transpose();
                 });
-  return {delta * YQ.leftCols<3>() * K_inverse, VX * K_inverse, YQ * M_inverse};
+  return {delta * YQ.leftCols<3>() * K_inverse, VX * K_inverse, YQ.lazyProduct(M_inverse)};
 }
 
 }  // namespace coldspray::pd

@@ -50,6 +50,7 @@ void invert_moments(const case_file::Case& c, State& s) {
                         i - body.begin, body.name, s.family_size[i]));
       store_tensor(K.inverse(), s.shape_inverse, i);
       s.moment_inverse[i] = M.inverse();
+      s.family_sums[i] = family_sums(s.families, s.neighbours, s.settings.influence, delta, i);
     }
   }
 }
@@ -113,6 +114,7 @@ State build_state(const case_file::Case& c) {
 
   s.shape_inverse.assign(n, Eigen::Matrix3d::Zero());
   s.moment_inverse.assign(n, MomentMatrix::Zero());
+  s.family_sums.assign(n, FamilySums{});
   s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
   s.piola_over_shape.assign(N.size(), Eigen::Matrix3d::Zero());
   s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());

@@ -14,6 +14,7 @@
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
 #include "pd/contact.hpp"
+#include "pd/deformation.hpp"
 #include "pd/families.hpp"
 #include "pd/neighbours.hpp"
 #include "pd/quadratic_fit.hpp"
@@ -53,7 +54,8 @@ struct State : bodies::Bodies {
   TensorField shape_inverse;  // K^-1 (eq 6) of the real points, 1/m^5
   // M^-1 of the second-order fit (pd/quadratic_fit.hpp) of the real points, 1/m^3.
   std::vector<MomentMatrix> moment_inverse;
-  TensorField deformation_gradient;  // F (eq 5) of the last force evaluation, real points
+  std::vector<FamilySums> family_sums;  // of the real points
+  TensorField deformation_gradient;     // F (eq 5) of the last force evaluation, real points
   // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
   // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
   TensorField piola_over_shape;
