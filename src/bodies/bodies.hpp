@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -88,6 +89,9 @@ struct Bodies {
   // The bonding model is on: bonds can form and hold a particle (the verdict, metrics/verdict.hpp).
   bool bonding = false;
   case_file::ImpactMetrics impact_metrics;
+  // Peridynamics: the neighbours in each point's family (the snapshots' `neighbours`); empty for
+  // the MPM.
+  std::vector<std::uint32_t> family_size;
 
   double time = 0.0;
   double dt = 0.0;

@@ -67,7 +67,6 @@ struct State : bodies::Bodies {
   std::array<std::vector<double>, 3> external_force;  // the dashpots' forces, N
   // Per point, the velocity components held at zero: bit d for axis d (fixed and roller faces).
   std::vector<std::uint8_t> held;
-  std::vector<std::uint32_t> family_size;  // neighbours, for the snapshots
 
   ContactList contact;
   std::vector<ContactLaw> contact_law;  // per ordered body pair [a * bodies + b]
