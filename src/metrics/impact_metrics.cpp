@@ -78,13 +78,18 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   m.cor = m.moving ? -(momentum_z / mass) / r.initial_velocity[2] : kNaN;
   m.plastic_energy_density = plastic / volume0;
 
+  // Jetting is judged in the frame that moves with the body along the axis, so that a particle's
+  // rebound (or any motion of the whole body along z) is not taken for a jet.
+  const double body_vz = momentum_z / mass;
   double jetted = 0.0, touched = 0.0, bonded = 0.0, bond_sum = 0.0, radius = 0.0;
   std::size_t touched_points = 0;
   for (std::size_t p = r.begin; p < r.end; ++p) {
     const double dx = P.position[0][p] - centroid[0], dy = P.position[1][p] - centroid[1];
     const double radial = std::hypot(dx, dy);
     const bool outward = radial > 0.0 && P.velocity[0][p] * dx + P.velocity[1][p] * dy > 0.0;
-    if (speed(P, p) > s.impact_metrics.rest_speed_limit && outward)
+    const double relative_speed =
+        std::hypot(P.velocity[0][p], P.velocity[1][p], P.velocity[2][p] - body_vz);
+    if (relative_speed > s.impact_metrics.rest_speed_limit && outward)
       jetted += P.mass[p];
     else
       radius = std::max(radius, radial);

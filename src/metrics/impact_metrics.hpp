@@ -19,9 +19,10 @@ struct ImpactMeasures {
   double abp = 0.0;   // mean D_bond over the surface points that have touched another body
   double pbcp = 0.0;  // % of contacted mass with D_bond >= 1 (eq 5.1), see docs/bonding.md
   double plastic_energy_density = 0.0;  // plastic work over the reference volume (eq 4.15), J/m^3
-  // Mass fraction of jetted points: faster than rest_speed_limit and moving away from the body's
-  // axis (the vertical through its centroid), counting the points that have left the grid (jets
-  // thrown off it) as jetted, of the body's initial mass.
+  // Mass fraction of jetted points: faster than rest_speed_limit relative to the body's mean
+  // z velocity and moving away from the body's axis (the vertical through its centroid),
+  // counting the points that have left the grid (jets thrown off it) as jetted, of the body's
+  // initial mass.
   double jetted_fraction = 0.0;
   // Deepest sinking of the points that started in the body's top layer, m (the crater of a
   // substrate).

@@ -20,7 +20,7 @@ using MomentMatrix = Eigen::Matrix<double, 9, 9>;
 using QuadraticMap = Eigen::Matrix<double, 3, 9>;
 
 inline Monomials monomials(const Eigen::Vector3d& xi, double delta) {
-  const Eigen::Vector3d s = xi / delta;
+  const Eigen::Vector3d s = xi * (1.0 / delta);  // one division per family, not three per bond
   Monomials q;
   q << s[0], s[1], s[2], 0.5 * s[0] * s[0], 0.5 * s[1] * s[1], 0.5 * s[2] * s[2], s[0] * s[1],
       s[0] * s[2], s[1] * s[2];

@@ -87,6 +87,17 @@ TEST(ImpactMetrics, PointsThatLeftTheGridCountAsJetted) {
   EXPECT_NEAR(m.pbcp, 75.0, 1e-12);
 }
 
+// A rebound is not a jet: the same points moving up at 100 m/s more, two of them spreading
+// outward at 1 m/s, have only point 4 jetting (relative to the body's mean z velocity).
+TEST(ImpactMetrics, AReboundIsNotAJet) {
+  bodies::Bodies s = six_points();
+  for (std::size_t p = 0; p < 6; ++p) s.points.velocity[2][p] += 100.0;
+  s.points.velocity[0][0] = -1.0;  // x = -1 um, left of the axis at x = 0.25 um: outward
+  s.points.velocity[0][1] = 1.0;   // x = 1 um: outward
+  const ImpactMeasures m = impact_measures(s, 0);
+  EXPECT_NEAR(m.jetted_fraction, 1.0 / 6.0, 1e-15);
+}
+
 TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
   bodies::Bodies s = six_points();
   s.bodies[0].initial_velocity = {0.0, 0.0, 0.0};
