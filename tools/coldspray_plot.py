@@ -415,17 +415,24 @@ class Section:
         self.h, self.v, self.size, self.values = h, v, size, values
 
 
-def make_section(data, case, body_ids, fields, path):
-    """Cuts the snapshot: selected bodies, the y ~ 0 slab in 3D, mirrored to -r if axisymmetric."""
+def make_section(data, case, body_ids, fields, path, reference=None):
+    """Cuts the snapshot: selected bodies, the y ~ 0 slab in 3D, mirrored to -r if axisymmetric.
+
+    With `reference` (the first snapshot, same points), the 3D slab is the points that were in it
+    there: the same material section at every time, whatever the points' motion across y."""
     if "body" not in data.arrays:
         raise PlotError(f"{path}: no 'body' point array")
     body = data.arrays["body"]
     spacing = np.array(case.spacings)[np.clip(body, 0, len(case.spacings) - 1)]
     keep = np.isin(body, body_ids)
     if not case.axisymmetric:
+        if reference is not None and len(reference) != len(data):
+            raise PlotError(f"{path}: --cut material needs the first snapshot's points "
+                            f"({len(reference)}), this one has {len(data)}")
+        y = (reference if reference is not None else data).points[:, 1]
         for b in body_ids:  # each body's slab from its own spacing
             on_body = body == b
-            keep[on_body] &= slab_mask(data.points[on_body, 1], case.spacings[b])
+            keep[on_body] &= slab_mask(y[on_body], case.spacings[b])
     h, v = data.points[keep, 0], data.points[keep, 2]
     values = {f: field_values(data, f, path)[keep] for f in fields}
     size = spacing[keep]
@@ -588,10 +595,11 @@ def command_section(options):
         raise PlotError(f"--cmap {options.cmap}: not a matplotlib colour map")
     pvd = os.path.join(folder, "snapshots.pvd")
     snapshots = pick_snapshots(read_pvd(pvd), times, pvd)
+    reference = read_vtu(read_pvd(pvd)[0][1]) if options.cut == "material" else None
     sections = []
     for _, path in snapshots:
         data = read_vtu(path)
-        sections.append(make_section(data, case, body_ids, fields, path))
+        sections.append(make_section(data, case, body_ids, fields, path, reference))
     fig = section_figure(case, snapshots, sections, fields, options)
     save_figure(fig, options.out, options.dpi)
 
@@ -874,6 +882,8 @@ def build_parser():
     section.add_argument("--xlim", help="horizontal limits in um, LOW:HIGH")
     section.add_argument("--ylim", help="vertical (z) limits in um, LOW:HIGH")
     section.add_argument("--cmap", default="viridis", help="matplotlib colour map")
+    section.add_argument("--cut", choices=["plane", "material"], default="plane",
+                         help="3D: the points near y = 0 now (plane) or at t = 0 (material)")
     section.add_argument("--panel-width", type=float, default=3.2, help="inches per panel")
     section.add_argument("--dpi", type=int, default=150)
     section.add_argument("--out", required=True, help="PNG file to write")

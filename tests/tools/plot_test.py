@@ -260,6 +260,23 @@ class PlotToolTest(unittest.TestCase):
         self.assertEqual(len(section.h), 16 + 24)  # one layer of three
         self.assertEqual(set(section.values["velocity.z"]), {-100.0, 0.0})
 
+    def test_3d_material_cut_follows_the_points_that_started_in_the_layer(self):
+        case = self.tool.CaseInfo(os.path.join(self.xyz, "case.resolved.yaml"))
+        first = self.tool.read_vtu(os.path.join(self.xyz, "snapshots", "step_00000000.vtu"))
+        later = self.tool.read_vtu(os.path.join(self.xyz, "snapshots", "step_00000000.vtu"))
+        middle = np.abs(first.points[:, 1]) < 0.01 * SPACING
+        later.points = later.points.copy()
+        later.points[middle, 1] += 0.7 * SPACING  # the middle layer has moved off y = 0
+        plane = self.tool.make_section(later, case, [0, 1], ["eqps"], "test")
+        material = self.tool.make_section(later, case, [0, 1], ["eqps"], "test", first)
+        reference = self.tool.make_section(first, case, [0, 1], ["eqps"], "test")
+        self.assertEqual(len(plane.h), 0)  # no point lies within 0.6 spacing of y = 0 now
+        self.assertEqual(len(material.h), 16 + 24)
+        np.testing.assert_array_equal(material.h, reference.h)
+        first.points = first.points[:-1]
+        with self.assertRaises(self.tool.PlotError):
+            self.tool.make_section(later, case, [0, 1], ["eqps"], "test", first)
+
     # --- the command line ---------------------------------------------------------------
 
     def test_section_writes_a_png(self):
