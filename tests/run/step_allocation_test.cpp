@@ -1,0 +1,111 @@
+// The step allocates nothing (issue 23's "the step must allocate nothing"; docs/solvers.md): the
+// MPM's and the peridynamics' steps, counted with a replaced global operator new, over steps in
+// which the peridynamics contact list is not rebuilt (a rebuild may grow it when more pairs come
+// close than ever before, pd/state.hpp).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "case/load.hpp"
+#include "mpm/setup.hpp"
+#include "mpm/stepper.hpp"
+#include "pd/setup.hpp"
+#include "pd/stepper.hpp"
+
+namespace {
+
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+
+}  // namespace
+
+// Replaces the program's allocation functions (replaceable global functions, [new.delete]),
+// counted only while `counting` is set.
+void* operator new(std::size_t size) {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t size, std::align_val_t align) {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
+  const std::size_t a = static_cast<std::size_t>(align);
+  if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+namespace coldspray {
+namespace {
+
+case_file::Case example(const std::string& name) {
+  return case_file::load_case(std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/" + name +
+                              ".yaml");
+}
+
+// Allocations in the steps, after `warm` steps, over which `marker(state)` did not change;
+// and the number of such steps.
+template <class State, class Step, class Marker>
+std::pair<long, int> allocations_in_steps(State& s, double cfl, int warm, int steps, Step step,
+                                          Marker marker) {
+  for (int n = 0; n < warm; ++n) step(s, cfl);
+  long counted = 0;
+  int clean = 0;
+  for (int n = 0; n < steps; ++n) {
+    const long before = marker(s);
+    allocations = 0;
+    counting = true;
+    step(s, cfl);
+    counting = false;
+    if (marker(s) != before) continue;
+    counted += allocations.load();
+    ++clean;
+  }
+  return {counted, clean};
+}
+
+// The counter itself: it sees a vector's allocation.
+TEST(StepAllocation, TheCounterSeesAnAllocation) {
+  allocations = 0;
+  counting = true;
+  std::vector<double> v(1000, 1.0);
+  counting = false;
+  EXPECT_EQ(allocations.load(), 1);
+  EXPECT_EQ(v[999], 1.0);
+}
+
+TEST(StepAllocation, TheMpmStepAllocatesNothing) {
+  const case_file::Case c = example("bonding-impact");
+  mpm::State s = mpm::build_state(c);
+  auto step = [](mpm::State& st, double cfl) {
+    st.dt = mpm::stable_time_step(st, cfl);
+    mpm::step(st);
+  };
+  const auto [counted, steps] =
+      allocations_in_steps(s, c.solver.cfl, 20, 30, step, [](const mpm::State&) { return 0L; });
+  EXPECT_EQ(steps, 30);
+  EXPECT_EQ(counted, 0);
+}
+
+TEST(StepAllocation, ThePeridynamicsStepAllocatesNothingBetweenContactRebuilds) {
+  const case_file::Case c = example("pd-quarter-impact");
+  pd::State s = pd::build_state(c);
+  auto step = [](pd::State& st, double cfl) {
+    st.dt = pd::stable_time_step(st, cfl);
+    pd::step(st);
+  };
+  const auto [counted, steps] = allocations_in_steps(
+      s, c.solver.cfl, 20, 40, step, [](const pd::State& st) { return st.contact.builds; });
+  EXPECT_GT(steps, 20);  // most steps reuse the contact list
+  EXPECT_EQ(counted, 0);
+}
+
+}  // namespace
+}  // namespace coldspray
