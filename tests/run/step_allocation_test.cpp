@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -22,29 +23,61 @@ namespace {
 std::atomic<bool> counting{false};
 std::atomic<long> allocations{0};
 
+void* counted_malloc(std::size_t size, std::size_t align) {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
+  size = size == 0 ? 1 : size;
+  return align <= alignof(std::max_align_t)
+             ? std::malloc(size)
+             : std::aligned_alloc(align, (size + align - 1) / align * align);
+}
+void* counted_new(std::size_t size, std::size_t align) {
+  if (void* p = counted_malloc(size, align)) return p;
+  throw std::bad_alloc();
+}
+constexpr std::size_t kPlain = alignof(std::max_align_t);
+
 }  // namespace
 
-// Replaces the program's allocation functions (replaceable global functions, [new.delete]),
-// counted only while `counting` is set.
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
+// Replaces every form of the program's allocation functions (replaceable global functions,
+// [new.delete]): all take from malloc and give back to free, so that no form left to the
+// library (or to a sanitizer's runtime) frees what another allocated; counted only while
+// `counting` is set.
+void* operator new(std::size_t n) { return counted_new(n, kPlain); }
+void* operator new[](std::size_t n) { return counted_new(n, kPlain); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  return counted_new(n, static_cast<std::size_t>(a));
 }
-void* operator new(std::size_t size, std::align_val_t align) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  const std::size_t a = static_cast<std::size_t>(align);
-  if (void* p = std::aligned_alloc(a, (size + a - 1) / a * a)) return p;
-  throw std::bad_alloc();
+void* operator new[](std::size_t n, std::align_val_t a) {
+  return counted_new(n, static_cast<std::size_t>(a));
 }
-// These deletes free what the news above took from malloc; GCC, inlining a delete next to the
-// default-looking new it pairs with, would call the free a mismatch.
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  return counted_malloc(n, kPlain);
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+  return counted_malloc(n, kPlain);
+}
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_malloc(n, static_cast<std::size_t>(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_malloc(n, static_cast<std::size_t>(a));
+}
+// GCC, inlining a delete next to the default-looking new it pairs with, would call the free a
+// mismatch.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
 #pragma GCC diagnostic pop
 
 namespace coldspray {
