@@ -37,7 +37,7 @@ void impact(benchmark::State& bench, double points_across) {
   while (s.time < 2e-9) advance();  // into the impact
   for (auto _ : bench) advance();
   const double bonds = static_cast<double>(s.families.bonds());
-  const double bytes = bonds * (sizeof(std::uint32_t) + sizeof(float)) +
+  const double bytes = bonds * (sizeof(std::uint32_t) + sizeof(std::uint16_t)) +
                        static_cast<double>(s.families.begin.size() * sizeof(std::size_t));
   bench.counters["points"] = static_cast<double>(s.points.size());
   bench.counters["ghosts"] = static_cast<double>(s.ghosts.size());

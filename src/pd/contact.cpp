@@ -8,24 +8,24 @@ namespace coldspray::pd {
 bool ContactList::stale(const Neighbours& P) const {
   const double limit = 0.25 * skin * skin;
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const double dx = P.position[0][p] - built_at[0][p], dy = P.position[1][p] - built_at[1][p],
-                 dz = P.position[2][p] - built_at[2][p];
-    if (dx * dx + dy * dy + dz * dz > limit) return true;
+    if ((P.position[p] - built_at[p]).squaredNorm() > limit) return true;
   }
   return false;
 }
 
 void ContactList::build(const Neighbours& P, double reach) {
   const std::size_t n = P.size();
-  for (int d = 0; d < 3; ++d) built_at[d] = P.position[d];
+  built_at = P.position;
   ++builds;
   // Cells `reach` wide over the points' bounding box.
   double lo[3], hi[3];
   long cells[3];
   for (int d = 0; d < 3; ++d) {
-    const auto [a, b] = std::minmax_element(P.position[d].begin(), P.position[d].end());
-    lo[d] = *a;
-    hi[d] = *b;
+    lo[d] = hi[d] = P.position[0][d];
+    for (const Eigen::Vector4d& y : P.position) {
+      lo[d] = std::min(lo[d], y[d]);
+      hi[d] = std::max(hi[d], y[d]);
+    }
     cells[d] = static_cast<long>(std::floor((hi[d] - lo[d]) / reach)) + 1;
   }
   auto coordinate = [&](double x, int d) {
@@ -36,9 +36,9 @@ void ContactList::build(const Neighbours& P, double reach) {
   cell_start.assign(total + 1, 0);
   cell_of.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
-    cell_of[p] = static_cast<std::uint32_t>(index(coordinate(P.position[0][p], 0),
-                                                  coordinate(P.position[1][p], 1),
-                                                  coordinate(P.position[2][p], 2)));
+    cell_of[p] = static_cast<std::uint32_t>(index(coordinate(P.position[p][0], 0),
+                                                  coordinate(P.position[p][1], 1),
+                                                  coordinate(P.position[p][2], 2)));
     ++cell_start[cell_of[p] + 1];
   }
   for (std::size_t c = 0; c < total; ++c) cell_start[c + 1] += cell_start[c];
@@ -50,8 +50,8 @@ void ContactList::build(const Neighbours& P, double reach) {
   other.clear();
   const double reach2 = reach * reach;
   for (std::size_t p = 0; p < P.real; ++p) {
-    const long c[3] = {coordinate(P.position[0][p], 0), coordinate(P.position[1][p], 1),
-                       coordinate(P.position[2][p], 2)};
+    const long c[3] = {coordinate(P.position[p][0], 0), coordinate(P.position[p][1], 1),
+                       coordinate(P.position[p][2], 2)};
     const std::size_t first = other.size();
     for (long k = std::max(c[2] - 1, 0L); k <= std::min(c[2] + 1, cells[2] - 1); ++k)
       for (long j = std::max(c[1] - 1, 0L); j <= std::min(c[1] + 1, cells[1] - 1); ++j)
@@ -60,10 +60,7 @@ void ContactList::build(const Neighbours& P, double reach) {
           for (std::size_t s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
             const std::uint32_t q = cell_order[s];
             if (P.body[q] == P.body[p]) continue;
-            const double dx = P.position[0][q] - P.position[0][p],
-                         dy = P.position[1][q] - P.position[1][p],
-                         dz = P.position[2][q] - P.position[2][p];
-            if (dx * dx + dy * dy + dz * dz <= reach2) other.push_back(q);
+            if ((P.position[q] - P.position[p]).squaredNorm() <= reach2) other.push_back(q);
           }
         }
     std::sort(other.begin() + static_cast<long>(first), other.end());

@@ -19,10 +19,10 @@
 namespace coldspray::pd {
 
 struct ContactList {
-  double skin = 0.0;                            // m
-  std::vector<std::size_t> begin;               // point i's candidates: [begin[i], begin[i + 1])
-  std::vector<std::uint32_t> other;             // candidate points of other bodies, ascending
-  std::array<std::vector<double>, 3> built_at;  // the positions at the last build, m
+  double skin = 0.0;                      // m
+  std::vector<std::size_t> begin;         // point i's candidates: [begin[i], begin[i + 1])
+  std::vector<std::uint32_t> other;       // candidate points of other bodies, ascending
+  std::vector<Eigen::Vector4d> built_at;  // the positions at the last build, m
   // Scratch of the builds, kept so that rebuilding allocates only when the list grows.
   std::vector<std::size_t> cell_start, cell_cursor;
   std::vector<std::uint32_t> cell_order, cell_of;

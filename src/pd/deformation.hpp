@@ -15,29 +15,48 @@
 namespace coldspray::pd {
 
 // omega<xi> (eqs 5-7): 1, or delta / |xi|.
-inline double influence(case_file::Influence kind, double length, double delta) {
-  return kind == case_file::Influence::Constant ? 1.0 : delta / length;
+template <case_file::Influence kind>
+double influence(double length, double delta) {
+  if constexpr (kind == case_file::Influence::Constant)
+    return 1.0;
+  else
+    return delta / length;
 }
 
-// Calls f(bond, j, xi, |xi|, w) for the bonds of point i, w = omega beta V_j.
-template <class F>
-void for_each_bond(const Families& fam, const Neighbours& N, case_file::Influence kind,
-                   double delta, std::size_t i, F&& f) {
-  const std::array<std::vector<double>, 3>& X = N.reference;
+// (Always inlined, with the bond function f, into the loop that calls it: its sums then stay in
+// registers.)
+template <case_file::Influence kind, class F>
+__attribute__((always_inline)) inline void for_each_bond_with(const Families& fam,
+                                                              const Neighbours& N,
+                                                              const BondWeights& weights,
+                                                              std::size_t i, F&& f) {
+  const Eigen::Vector4d X_i = N.reference[i];
   for (std::size_t b = fam.begin[i]; b < fam.begin[i + 1]; ++b) {
     const std::size_t j = fam.neighbour[b];
-    const Eigen::Vector3d xi(X[0][j] - X[0][i], X[1][j] - X[1][i], X[2][j] - X[2][i]);
-    const double length = xi.norm();
+    const Eigen::Vector3d xi = (N.reference[j] - X_i).head<3>();
+    const double length = xi.norm();  // not computed where neither omega nor f reads it
     f(b, j, xi, length,
-      influence(kind, length, delta) * static_cast<double>(fam.volume_fraction[b]) * N.volume[j]);
+      influence<kind>(length, weights.delta) * fam.volume_fraction(b) * N.volume[j]);
   }
+}
+
+// Calls f(bond, j, xi, |xi|, w) for the bonds of point i, w = omega beta V_j. The choice of
+// omega is made once per family, not per bond.
+template <class F>
+__attribute__((always_inline)) inline void for_each_bond(const Families& fam, const Neighbours& N,
+                                                         const BondWeights& weights, std::size_t i,
+                                                         F&& f) {
+  if (weights.influence == case_file::Influence::Constant)
+    for_each_bond_with<case_file::Influence::Constant>(fam, N, weights, i, f);
+  else
+    for_each_bond_with<case_file::Influence::InverseDistance>(fam, N, weights, i, f);
 }
 
 // Eq 6: K = sum omega xi (x) xi V_j.
 inline Eigen::Matrix3d shape_tensor(const Families& fam, const Neighbours& N,
-                                    case_file::Influence kind, double delta, std::size_t i) {
+                                    const BondWeights& weights, std::size_t i) {
   Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
-  for_each_bond(fam, N, kind, delta, i,
+  for_each_bond(fam, N, weights, i,
                 [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double, double w) {
                   K.noalias() += w * xi * xi.transpose();
                 });
@@ -46,11 +65,11 @@ inline Eigen::Matrix3d shape_tensor(const Families& fam, const Neighbours& N,
 
 // The moment matrix of the second-order fit (pd/quadratic_fit.hpp): M = sum omega q (x) q V_j.
 inline MomentMatrix moment_matrix(const Families& fam, const Neighbours& N,
-                                  case_file::Influence kind, double delta, std::size_t i) {
+                                  const BondWeights& weights, std::size_t i) {
   MomentMatrix M = MomentMatrix::Zero();
-  for_each_bond(fam, N, kind, delta, i,
+  for_each_bond(fam, N, weights, i,
                 [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double, double w) {
-                  const Monomials q = monomials(xi, delta);
+                  const Monomials q = monomials(xi, weights.delta);
                   M.noalias() += w * q * q.transpose();
                 });
   return M;
@@ -64,13 +83,13 @@ struct FamilySums {
   Monomials control = Monomials::Zero();           // m^2
 };
 
-inline FamilySums family_sums(const Families& fam, const Neighbours& N, case_file::Influence kind,
-                              double delta, std::size_t i) {
+inline FamilySums family_sums(const Families& fam, const Neighbours& N, const BondWeights& weights,
+                              std::size_t i) {
   FamilySums sums;
-  for_each_bond(fam, N, kind, delta, i,
+  for_each_bond(fam, N, weights, i,
                 [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double length, double w) {
                   sums.bond += w * xi;
-                  sums.control += w / length * monomials(xi, delta);
+                  sums.control += w / length * monomials(xi, weights.delta);
                 });
   return sums;
 }
@@ -85,21 +104,24 @@ struct Deformation {
 // Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28). The same sum
 // over the bonds' monomials q gives the second-order fit C = [sum omega Y (x) q V_j] M^-1; the
 // first three monomials are xi / delta, so the sum of eq 5 is delta times its first columns.
-inline Deformation deformation(const Families& fam, const Neighbours& N, case_file::Influence kind,
-                               double delta, const Eigen::Matrix3d& K_inverse,
-                               const MomentMatrix& M_inverse, std::size_t i) {
-  const auto& y = N.position;
-  const auto& v = N.velocity;
+// The sums run on padded columns, one register each.
+inline Deformation deformation(const Families& fam, const Neighbours& N, const BondWeights& weights,
+                               const Eigen::Matrix3d& K_inverse, const MomentMatrix& M_inverse,
+                               std::size_t i) {
+  const double delta = weights.delta;
+  const Eigen::Vector4d y_i = N.position[i], v_i = N.velocity[i];
   QuadraticMap YQ = QuadraticMap::Zero();
-  Eigen::Matrix3d VX = Eigen::Matrix3d::Zero();
-  for_each_bond(fam, N, kind, delta, i,
+  Eigen::Matrix<double, 4, 3> VX = Eigen::Matrix<double, 4, 3>::Zero();
+  for_each_bond(fam, N, weights, i,
                 [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double w) {
-                  const Eigen::Vector3d Y(y[0][j] - y[0][i], y[1][j] - y[1][i], y[2][j] - y[2][i]);
-                  const Eigen::Vector3d V(v[0][j] - v[0][i], v[1][j] - v[1][i], v[2][j] - v[2][i]);
-                  YQ.noalias() += (w * Y) * monomials(xi, delta).transpose();
-                  VX.noalias() += w * V * xi.transpose();
+                  const Eigen::Vector4d wY = w * (N.position[j] - y_i);
+                  const Eigen::Vector4d wV = w * (N.velocity[j] - v_i);
+                  const Monomials q = monomials(xi, delta);
+                  for (int k = 0; k < 9; ++k) YQ.col(k) += q[k] * wY;
+                  for (int k = 0; k < 3; ++k) VX.col(k) += xi[k] * wV;
                 });
-  return {delta * YQ.leftCols<3>() * K_inverse, VX * K_inverse, YQ.lazyProduct(M_inverse)};
+  return {delta * YQ.topLeftCorner<3, 3>() * K_inverse, VX.topRows<3>() * K_inverse,
+          YQ.lazyProduct(M_inverse)};
 }
 
 }  // namespace coldspray::pd

@@ -7,12 +7,6 @@
 
 namespace coldspray::pd {
 
-double volume_fraction(double r, double delta, double h) {
-  if (r <= delta - 0.5 * h) return 1.0;
-  if (r >= delta + 0.5 * h) return 0.0;
-  return (delta + 0.5 * h - r) / h;
-}
-
 namespace {
 
 // One body's points binned into cubic cells of edge `cell`, counting sort by cell, so a point's
@@ -31,15 +25,15 @@ struct CellList {
 };
 
 // The points `members` (ascending) binned.
-CellList bin(const std::array<std::vector<double>, 3>& X, const std::vector<std::uint32_t>& members,
+CellList bin(const std::vector<Eigen::Vector4d>& X, const std::vector<std::uint32_t>& members,
              double cell) {
   CellList list;
   list.cell = cell;
   for (int d = 0; d < 3; ++d) {
-    double lo = X[d][members.front()], hi = lo;
+    double lo = X[members.front()][d], hi = lo;
     for (const std::uint32_t p : members) {
-      lo = std::min(lo, X[d][p]);
-      hi = std::max(hi, X[d][p]);
+      lo = std::min(lo, X[p][d]);
+      hi = std::max(hi, X[p][d]);
     }
     list.origin[d] = lo;
     list.cells[d] = static_cast<long>(std::floor((hi - lo) / cell)) + 1;
@@ -49,8 +43,8 @@ CellList bin(const std::array<std::vector<double>, 3>& X, const std::vector<std:
   std::vector<std::size_t> cell_of(members.size());
   for (std::size_t m = 0; m < members.size(); ++m) {
     const std::uint32_t p = members[m];
-    const long c = list.index(list.coordinate(X[0][p], 0), list.coordinate(X[1][p], 1),
-                              list.coordinate(X[2][p], 2));
+    const long c = list.index(list.coordinate(X[p][0], 0), list.coordinate(X[p][1], 1),
+                              list.coordinate(X[p][2], 2));
     cell_of[m] = static_cast<std::size_t>(c);
     ++list.start[c + 1];
   }
@@ -65,7 +59,7 @@ CellList bin(const std::array<std::vector<double>, 3>& X, const std::vector<std:
 
 Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange>& bodies,
                         const std::vector<double>& delta) {
-  const std::array<std::vector<double>, 3>& X = N.reference;
+  const std::vector<Eigen::Vector4d>& X = N.reference;
   if (N.size() >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("peridynamics: more than 2^32 points");
   Families f;
@@ -80,8 +74,8 @@ Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange
     const CellList list = bin(X, members, reach);
     for (std::size_t p = body.begin; p < body.end; ++p) {
       found.clear();
-      const long ci = list.coordinate(X[0][p], 0), cj = list.coordinate(X[1][p], 1),
-                 ck = list.coordinate(X[2][p], 2);
+      const long ci = list.coordinate(X[p][0], 0), cj = list.coordinate(X[p][1], 1),
+                 ck = list.coordinate(X[p][2], 2);
       for (long k = std::max(ck - 1, 0L); k <= std::min(ck + 1, list.cells[2] - 1); ++k)
         for (long j = std::max(cj - 1, 0L); j <= std::min(cj + 1, list.cells[1] - 1); ++j)
           for (long i = std::max(ci - 1, 0L); i <= std::min(ci + 1, list.cells[0] - 1); ++i) {
@@ -89,17 +83,18 @@ Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange
             for (std::size_t s = list.start[c]; s < list.start[c + 1]; ++s) {
               const std::uint32_t q = list.order[s];
               if (q == p) continue;
-              const double dx = X[0][q] - X[0][p], dy = X[1][q] - X[1][p], dz = X[2][q] - X[2][p];
+              const double dx = X[q][0] - X[p][0], dy = X[q][1] - X[p][1], dz = X[q][2] - X[p][2];
               if (volume_fraction(std::sqrt(dx * dx + dy * dy + dz * dz), delta[b], h) > 0.0)
                 found.push_back(q);
             }
           }
       std::sort(found.begin(), found.end());
       for (const std::uint32_t q : found) {
-        const double dx = X[0][q] - X[0][p], dy = X[1][q] - X[1][p], dz = X[2][q] - X[2][p];
+        const double dx = X[q][0] - X[p][0], dy = X[q][1] - X[p][1], dz = X[q][2] - X[p][2];
+        const double beta = volume_fraction(std::sqrt(dx * dx + dy * dy + dz * dz), delta[b], h);
         f.neighbour.push_back(q);
-        f.volume_fraction.push_back(static_cast<float>(
-            volume_fraction(std::sqrt(dx * dx + dy * dy + dz * dz), delta[b], h)));
+        f.partial_volume.push_back(
+            static_cast<std::uint16_t>(std::lround(beta * Families::kPartialVolumeUnit)));
       }
       f.begin[p + 1] = f.neighbour.size();
     }

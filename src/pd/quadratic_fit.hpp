@@ -16,8 +16,10 @@ namespace coldspray::pd {
 // s2^2 / 2, s3^2 / 2, s1 s2, s1 s3, s2 s3.
 using Monomials = Eigen::Matrix<double, 9, 1>;
 using MomentMatrix = Eigen::Matrix<double, 9, 9>;
-// C: y_j - y_i ~ C q(xi), m.
-using QuadraticMap = Eigen::Matrix<double, 3, 9>;
+// C: y_j - y_i ~ C q(xi), m. Stored with a fourth row, always zero, so that each column is one
+// four-double (AVX) register in the bond loops, which read C of every neighbour
+// (pd/deformation.hpp, pd/forces.cpp).
+using QuadraticMap = Eigen::Matrix<double, 4, 9>;
 
 inline Monomials monomials(const Eigen::Vector3d& xi, double delta) {
   const Eigen::Vector3d s = xi * (1.0 / delta);  // one division per family, not three per bond
@@ -40,7 +42,7 @@ inline QuadraticMap mirrored(const QuadraticMap& C, std::uint8_t flips) {
   const double rx = (flips & 1) ? -1.0 : 1.0, ry = (flips & 2) ? -1.0 : 1.0;
   Monomials Q;
   Q << rx, ry, 1.0, 1.0, 1.0, 1.0, rx * ry, rx, ry;
-  const Eigen::Vector3d R(rx, ry, 1.0);
+  const Eigen::Vector4d R(rx, ry, 1.0, 1.0);
   return R.asDiagonal() * C * Q.asDiagonal();
 }
 

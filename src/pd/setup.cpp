@@ -34,12 +34,10 @@ bool singular(const Matrix& M) {
 void invert_moments(const case_file::Case& c, State& s) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const bodies::BodyRange& body = s.bodies[b];
-    const double delta = s.body_bonds[b].horizon;
+    const BondWeights weights = bond_weights(s, b);
     for (std::size_t i = body.begin; i < body.end; ++i) {
-      const Eigen::Matrix3d K =
-          shape_tensor(s.families, s.neighbours, s.settings.influence, delta, i);
-      const MomentMatrix M =
-          moment_matrix(s.families, s.neighbours, s.settings.influence, delta, i);
+      const Eigen::Matrix3d K = shape_tensor(s.families, s.neighbours, weights, i);
+      const MomentMatrix M = moment_matrix(s.families, s.neighbours, weights, i);
       if (singular(K) || singular(M))
         throw InputError(
             c.source_file, fmt::format("bodies.{}.spacing", body.name),
@@ -50,7 +48,7 @@ void invert_moments(const case_file::Case& c, State& s) {
                         i - body.begin, body.name, s.family_size[i]));
       store_tensor(K.inverse(), s.shape_inverse, i);
       s.moment_inverse[i] = M.inverse();
-      s.family_sums[i] = family_sums(s.families, s.neighbours, s.settings.influence, delta, i);
+      s.family_sums[i] = family_sums(s.families, s.neighbours, weights, i);
     }
   }
 }
@@ -86,8 +84,11 @@ State build_state(const case_file::Case& c) {
   N.real = n;
   N.volume = s.points.volume0;
   N.body = s.points.body;
+  N.reference.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    N.reference[i] = {s.points.position[0][i], s.points.position[1][i], s.points.position[2][i],
+                      0.0};
   for (int d = 0; d < 3; ++d) {
-    N.reference[d] = s.points.position[d];
     s.acceleration[d].assign(n, 0.0);
     s.control_force[d].assign(n, 0.0);
     s.contact_force[d].assign(n, 0.0);
@@ -116,7 +117,7 @@ State build_state(const case_file::Case& c) {
   s.moment_inverse.assign(n, MomentMatrix::Zero());
   s.family_sums.assign(n, FamilySums{});
   s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
-  s.piola_over_shape.assign(N.size(), Eigen::Matrix3d::Zero());
+  s.piola_over_shape.assign(N.size(), PaddedTensor::Zero());
   s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());
   invert_moments(c, s);
 

@@ -24,6 +24,10 @@ namespace coldspray::pd {
 // A 3x3 tensor per point, each point's nine components together: the bond loops read a
 // neighbour's whole tensor at once (nine separate arrays cost nine cache lines per neighbour).
 using TensorField = std::vector<Eigen::Matrix3d>;
+// The same with a fourth, zero row, so that each column is one four-double (AVX) register, for
+// the tensor the force loop reads at every neighbour (pd/forces.cpp).
+using PaddedTensor = Eigen::Matrix<double, 4, 3>;
+using PaddedTensorField = std::vector<PaddedTensor>;
 
 // What a body's bonds need: its horizon delta and the bond micromodulus 18 K / (pi delta^4) of
 // its material (Silling and Askari, Comput. Struct. 83 (2005), eq 23 of the PD paper's ref 49),
@@ -58,7 +62,7 @@ struct State : bodies::Bodies {
   TensorField deformation_gradient;     // F (eq 5) of the last force evaluation, real points
   // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
   // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
-  TensorField piola_over_shape;
+  PaddedTensorField piola_over_shape;
   std::vector<QuadraticMap> quadratic_fit;
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
   // The parts of the last force density from the zero-energy-mode control and from contact,
@@ -72,5 +76,10 @@ struct State : bodies::Bodies {
   std::vector<ContactLaw> contact_law;  // per ordered body pair [a * bodies + b]
   double min_spacing = 0.0;             // the smallest body spacing, m (the time step's length)
 };
+
+// The bond weights of body b's families (pd/deformation.hpp).
+inline BondWeights bond_weights(const State& s, std::size_t b) {
+  return {s.settings.influence, s.body_bonds[b].horizon};
+}
 
 }  // namespace coldspray::pd

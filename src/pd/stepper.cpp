@@ -57,10 +57,10 @@ double update_stress(State& s) {
   double max_speed = 0.0;
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const bodies::BodyRange& body = s.bodies[b];
-    const double delta = s.body_bonds[b].horizon;
+    const BondWeights weights = bond_weights(s, b);
     materials::visit_models(body.material, [&](const auto& models) {
       auto kinematics_of = [&](std::size_t i) {
-        const Deformation def = deformation(s.families, s.neighbours, s.settings.influence, delta,
+        const Deformation def = deformation(s.families, s.neighbours, weights,
                                             tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
         store_tensor(def.F, s.deformation_gradient, i);
         s.quadratic_fit[i] = def.fit;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pd/tensor_field.hpp"
+
 namespace coldspray::pd {
 
 namespace {
@@ -24,22 +26,19 @@ void add_ghosts(State& s) {
         for (int axis = 0; axis < 2; ++axis)
           if (flips >> axis & 1)
             near = near && s.symmetry_plane[axis] &&
-                   std::abs(N.reference[axis][i] - *s.symmetry_plane[axis]) < reach;
+                   std::abs(N.reference[i][axis] - *s.symmetry_plane[axis]) < reach;
         if (!near) continue;
         s.ghosts.push_back({static_cast<std::uint32_t>(i), flips});
-        for (int d = 0; d < 3; ++d) {
-          const bool flipped = d < 2 && (flips >> d & 1);
-          const double x = N.reference[d][i];
-          N.reference[d].push_back(flipped ? 2.0 * *s.symmetry_plane[d] - x : x);
-        }
+        Eigen::Vector4d X = N.reference[i];
+        for (int d = 0; d < 2; ++d)
+          if (flips >> d & 1) X[d] = 2.0 * *s.symmetry_plane[d] - X[d];
+        N.reference.push_back(X);
         N.volume.push_back(N.volume[i]);
         N.body.push_back(N.body[i]);
       }
   }
-  for (int d = 0; d < 3; ++d) {
-    N.position[d].resize(N.size());
-    N.velocity[d].resize(N.size());
-  }
+  N.position.assign(N.size(), Eigen::Vector4d::Zero());
+  N.velocity.assign(N.size(), Eigen::Vector4d::Zero());
 }
 
 void refresh_ghost_motion(State& s) {
@@ -48,11 +47,13 @@ void refresh_ghost_motion(State& s) {
   for (std::size_t g = 0; g < s.ghosts.size(); ++g) {
     const Ghost& ghost = s.ghosts[g];
     const std::size_t j = N.real + g, i = ghost.source;
-    for (int d = 0; d < 3; ++d) {
-      const bool flipped = d < 2 && (ghost.flips >> d & 1);
-      N.position[d][j] = flipped ? 2.0 * *s.symmetry_plane[d] - N.position[d][i] : N.position[d][i];
-      N.velocity[d][j] = flipped ? -N.velocity[d][i] : N.velocity[d][i];
-    }
+    N.position[j] = N.position[i];
+    N.velocity[j] = N.velocity[i];
+    for (int d = 0; d < 2; ++d)
+      if (ghost.flips >> d & 1) {
+        N.position[j][d] = 2.0 * *s.symmetry_plane[d] - N.position[i][d];
+        N.velocity[j][d] = -N.velocity[i][d];
+      }
   }
 }
 
@@ -62,7 +63,7 @@ void refresh_ghost_tensors(State& s) {
     const Ghost& ghost = s.ghosts[g];
     const Eigen::Matrix3d R = reflection(ghost.flips);
     const std::size_t j = s.neighbours.real + g, i = ghost.source;
-    s.piola_over_shape[j] = R * s.piola_over_shape[i] * R;
+    store_tensor(R * s.piola_over_shape[i].topRows<3>() * R, s.piola_over_shape, j);
     s.quadratic_fit[j] = mirrored(s.quadratic_fit[i], ghost.flips);
   }
 }
@@ -71,11 +72,10 @@ void refresh_neighbours(State& s) {
   Neighbours& N = s.neighbours;
   const bodies::Points& P = s.points;
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < P.size(); ++i)
-    for (int d = 0; d < 3; ++d) {
-      N.position[d][i] = P.position[d][i];
-      N.velocity[d][i] = P.velocity[d][i];
-    }
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    N.position[i] = {P.position[0][i], P.position[1][i], P.position[2][i], 0.0};
+    N.velocity[i] = {P.velocity[0][i], P.velocity[1][i], P.velocity[2][i], 0.0};
+  }
   refresh_ghost_motion(s);
 }
 
