@@ -21,13 +21,10 @@ ForceDensity force_density(const State& s, std::size_t i) {
   const BondWeights weights = bond_weights(s, b);
   const double delta = weights.delta;
   const double control = s.settings.stabilization * s.body_bonds[b].micromodulus;
-  const Eigen::Vector4d v_i = N.velocity[i];
+  const Eigen::Vector4d y_i = N.position[i];
   // The sums over j of the terms that hold only i's quantities, from the family's fixed sums.
   Eigen::Vector4d bonds = s.piola_over_shape[i] * s.family_sums[i].bond;
-  // zdot_i summed over the family, sum w / |xi| ((v_j - v_i) - Cdot_i q(xi)), and the neighbours'
-  // r_j zdot_j, sum w / |xi| r_j ((v_j - v_i) + Cdot_j q(-xi)) (zdot_j with the sign of i's side).
-  Eigen::Vector4d own = -(s.velocity_fit[i] * s.family_sums[i].control);
-  Eigen::Vector4d theirs = Eigen::Vector4d::Zero();
+  Eigen::Vector4d stabilising = -(s.quadratic_fit[i] * s.family_sums[i].control);
   for_each_bond(
       s.families, N, weights, i,
       [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double length, double w)
@@ -36,22 +33,22 @@ ForceDensity force_density(const State& s, std::size_t i) {
             const PaddedTensor& A_j = s.piola_over_shape[j];
             bonds += w * (xi[0] * A_j.col(0) + xi[1] * A_j.col(1) + xi[2] * A_j.col(2));
             if (control == 0.0) return;
+            // The non-uniform parts z of the bond (Silling 2017), measured against each end's
+            // second-order fit: z_i = Y - C_i q(xi) at i (its C_i part above), and at j, with the
+            // sign of i's side, Y + C_j q(-xi).
             const Monomials q = reversed(monomials(xi, delta));
-            const QuadraticMap& C = s.velocity_fit[j];
-            // Cdot_j q(-xi), in three independent chains.
+            const QuadraticMap& C = s.quadratic_fit[j];
+            // C_j q(-xi), in three independent chains.
             const Eigen::Vector4d Cq = (q[0] * C.col(0) + q[1] * C.col(1) + q[2] * C.col(2)) +
                                        (q[3] * C.col(3) + q[4] * C.col(4) + q[5] * C.col(5)) +
                                        (q[6] * C.col(6) + q[7] * C.col(7) + q[8] * C.col(8));
-            const Eigen::Vector4d V = N.velocity[j] - v_i;
-            const double w_l = w / length;
-            own += w_l * V;
-            theirs += (w_l * s.control_scale[j]) * (V + Cq);
+            stabilising += w / length * (2.0 * (N.position[j] - y_i) + Cq);
           });
-  const Eigen::Vector4d control_rate = control * (s.control_scale[i] * own + theirs);
+  stabilising *= control;
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
   for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c)
     contact += contact_force(s, i, s.contact.other[c]);
-  return {bonds.head<3>(), control_rate.head<3>(), contact};
+  return {bonds.head<3>(), stabilising.head<3>(), contact};
 }
 
 }  // namespace coldspray::pd

@@ -118,8 +118,7 @@ State build_state(const case_file::Case& c) {
   s.family_sums.assign(n, FamilySums{});
   s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
   s.piola_over_shape.assign(N.size(), PaddedTensor::Zero());
-  s.velocity_fit.assign(N.size(), QuadraticMap::Zero());
-  s.control_scale.assign(N.size(), 1.0);
+  s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());
   invert_moments(c, s);
 
   s.held.assign(n, 0);

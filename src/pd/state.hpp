@@ -61,16 +61,12 @@ struct State : bodies::Bodies {
   std::vector<FamilySums> family_sums;  // of the real points
   TensorField deformation_gradient;     // F (eq 5) of the last force evaluation, real points
   // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
-  // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5), the second-order fit Cdot of the velocities
-  // (1/s) and the scale of the control's stiffness, the ratio of the material's tangent modulus
-  // to its elastic one (pd/control_scale.hpp).
+  // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
   PaddedTensorField piola_over_shape;
-  std::vector<QuadraticMap> velocity_fit;
-  std::vector<double> control_scale;
+  std::vector<QuadraticMap> quadratic_fit;
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
-  // The zero-energy-mode control's force density, accumulated step by step from its rate
-  // (pd/forces.hpp), and the last contact force density, N/m^3, whose works the step books once
-  // the velocities are those of the step's end.
+  // The parts of the last force density from the zero-energy-mode control and from contact,
+  // N/m^3, whose work the step books once the velocities are those of the step's end.
   std::array<std::vector<double>, 3> control_force, contact_force;
   std::array<std::vector<double>, 3> external_force;  // the dashpots' forces, N
   // Per point, the velocity components held at zero: bit d for axis d (fixed and roller faces).

@@ -10,7 +10,6 @@
 #include "bodies/material_state.hpp"
 #include "bodies/update_points.hpp"
 #include "materials/artificial_viscosity.hpp"
-#include "pd/control_scale.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
 #include "pd/symmetry.hpp"
@@ -50,8 +49,8 @@ void drift(State& s) {
 }
 
 // Eqs 5, 28-31 at every point: F and L = Fdot F^-1 from the family, then the materials' update
-// (the MPM's, bodies/update_points.hpp), A = P K^-1 with P = J (sigma - q I) F^-T and the
-// control's scale (pd/control_scale.hpp). Returns the largest c + |v|.
+// (the MPM's, bodies/update_points.hpp) and A = P K^-1 with P = J (sigma - q I) F^-T. Returns the
+// largest c + |v|.
 double update_stress(State& s) {
   bodies::Points& P = s.points;
   const double dt = s.dt;
@@ -64,7 +63,7 @@ double update_stress(State& s) {
         const Deformation def = deformation(s.families, s.neighbours, weights,
                                             tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
         store_tensor(def.F, s.deformation_gradient, i);
-        s.velocity_fit[i] = def.velocity_fit;
+        s.quadratic_fit[i] = def.fit;
         materials::StepKinematics k;
         k.set_velocity_gradient(def.Fdot * def.F.inverse(), dt);  // eqs 28-29
         k.J_new = def.F.determinant();
@@ -73,9 +72,6 @@ double update_stress(State& s) {
       auto complete_point = [&](std::size_t i, const materials::StepKinematics& k,
                                 const materials::PointState& state) {
         const double eqps_before = P.eqps[i];
-        if (s.settings.control_stiffness == case_file::ControlStiffness::Tangent)
-          s.control_scale[i] = control_scale(models, state, state.eqps > eqps_before,
-                                             body.material.density / state.J);
         bodies::store_point_state(state, P, i);
         if (state.eqps > eqps_before)
           P.plastic_work[i] +=
@@ -106,25 +102,23 @@ double update_stress(State& s) {
   return max_speed;
 }
 
-// a = f / rho0 at every point, the control's force advanced by its rate over the step that
-// moved the points (pd/forces.hpp), with the absorbing faces' dashpots (thesis eqs 3.45-3.46)
-// and held points at rest.
+// a = f / rho0 at every point, with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and
+// held points at rest.
 void accelerate(State& s) {
   bodies::Points& P = s.points;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < P.size(); ++i) {
     const ForceDensity f = force_density(s, i);
-    Eigen::Vector3d total = f.bonds + f.contact;
     for (int d = 0; d < 3; ++d) {
-      s.control_force[d][i] += s.dt * f.control_rate[d];
+      s.control_force[d][i] = f.control[d];
       s.contact_force[d][i] = f.contact[d];
-      total[d] += s.control_force[d][i];
     }
     // The points another body pushes on: the contact area of the impact metrics.
     P.touching[i] = f.contact.squaredNorm() > 0.0;
     P.touched[i] |= P.touching[i];
     const double rho0 = s.bodies[P.body[i]].material.density;
-    for (int d = 0; d < 3; ++d) s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : total[d] / rho0;
+    for (int d = 0; d < 3; ++d)
+      s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : f.total()[d] / rho0;
   }
   for (bodies::AbsorbingPoint& a : s.absorbing)
     for (int d = 0; d < 3; ++d) {

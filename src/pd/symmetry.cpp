@@ -64,8 +64,7 @@ void refresh_ghost_tensors(State& s) {
     const Eigen::Matrix3d R = reflection(ghost.flips);
     const std::size_t j = s.neighbours.real + g, i = ghost.source;
     store_tensor(R * s.piola_over_shape[i].topRows<3>() * R, s.piola_over_shape, j);
-    s.velocity_fit[j] = mirrored(s.velocity_fit[i], ghost.flips);
-    s.control_scale[j] = s.control_scale[i];
+    s.quadratic_fit[j] = mirrored(s.quadratic_fit[i], ghost.flips);
   }
 }
 
