@@ -43,6 +43,7 @@ void impact(benchmark::State& bench, double points_across) {
   bench.counters["ghosts"] = static_cast<double>(s.ghosts.size());
   bench.counters["bonds"] = bonds;
   bench.counters["bytes_per_bond"] = bytes / bonds;
+  bench.counters["pair_blocks"] = static_cast<double>(s.pairs.block.size() - 1);
   bench.counters["threads"] = omp_get_max_threads();
   bench.counters["point_steps_per_second"] = benchmark::Counter(
       static_cast<double>(s.points.size()), benchmark::Counter::kIsIterationInvariantRate);

@@ -45,10 +45,14 @@ ForceDensity force_density(const State& s, std::size_t i) {
             stabilising += w / length * (2.0 * (N.position[j] - y_i) + Cq);
           });
   stabilising *= control;
+  return {bonds.head<3>(), stabilising.head<3>(), contact_density(s, i)};
+}
+
+Eigen::Vector3d contact_density(const State& s, std::size_t i) {
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
   for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c)
     contact += contact_force(s, i, s.contact.other[c]);
-  return {bonds.head<3>(), stabilising.head<3>(), contact};
+  return contact;
 }
 
 }  // namespace coldspray::pd

@@ -19,10 +19,15 @@ struct ForceDensity {
 // the control: G_s c / |xi| omega (z_i + z_j) V_j with z = Y - C q(xi) seen from either end
 // (C each end's second-order fit, pd/quadratic_fit.hpp), zero under any deformation up to
 // quadratic order, at surfaces too; the contacts: sum over the points of other bodies nearby.
+// The plain per-point path: the step visits each pair once instead (pd/pair_forces.hpp), and the
+// tests hold the two together.
 ForceDensity force_density(const State& s, std::size_t i);
 
 // The short-range repulsion on i from j (pd/contact.hpp), N/m^3: zero beyond the contact
 // distance.
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j);
+
+// The sum of the repulsions on i from the points of other bodies in its contact list, N/m^3.
+Eigen::Vector3d contact_density(const State& s, std::size_t i);
 
 }  // namespace coldspray::pd

@@ -11,6 +11,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "core/error.hpp"
 #include "pd/deformation.hpp"
+#include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
 
@@ -120,6 +121,9 @@ State build_state(const case_file::Case& c) {
   s.piola_over_shape.assign(N.size(), PaddedTensor::Zero());
   s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());
   invert_moments(c, s);
+  s.pairs = pair_schedule(s.families, n);
+  s.pair_bonds.assign(n, Eigen::Vector4d::Zero());
+  s.pair_control.assign(n, Eigen::Vector4d::Zero());
 
   s.held.assign(n, 0);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {

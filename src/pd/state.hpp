@@ -44,6 +44,14 @@ struct Ghost {
   std::uint8_t flips = 0;
 };
 
+// The order in which pd/pair_forces.hpp visits each pair of neighbours once: per real point the
+// first bond whose neighbour index exceeds its own, and the point blocks [block[k],
+// block[k + 1]) that run in parallel two colours at a time.
+struct PairSchedule {
+  std::vector<std::size_t> first_pair;
+  std::vector<std::size_t> block;
+};
+
 struct State : bodies::Bodies {
   case_file::Peridynamics settings;
   case_file::ArtificialViscosity viscosity;
@@ -54,7 +62,8 @@ struct State : bodies::Bodies {
   std::vector<Ghost> ghosts;
   Neighbours neighbours;  // the real points, then the ghosts (their X, y, v, V0, body)
 
-  Families families;          // of the real points, into `neighbours`
+  Families families;  // of the real points, into `neighbours`
+  PairSchedule pairs;
   TensorField shape_inverse;  // K^-1 (eq 6) of the real points, 1/m^5
   // M^-1 of the second-order fit (pd/quadratic_fit.hpp) of the real points, 1/m^3.
   std::vector<MomentMatrix> moment_inverse;
@@ -64,6 +73,8 @@ struct State : bodies::Bodies {
   // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
   PaddedTensorField piola_over_shape;
   std::vector<QuadraticMap> quadratic_fit;
+  // The bond and control force densities of the real points (pd/pair_forces.hpp), N/m^3.
+  std::vector<Eigen::Vector4d> pair_bonds, pair_control;
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
   // The parts of the last force density from the zero-energy-mode control and from contact,
   // N/m^3, whose work the step books once the velocities are those of the step's end.

@@ -12,6 +12,7 @@
 #include "materials/artificial_viscosity.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
+#include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
 
@@ -102,13 +103,16 @@ double update_stress(State& s) {
   return max_speed;
 }
 
-// a = f / rho0 at every point, with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and
-// held points at rest.
+// a = f / rho0 at every point (the bonds' and the control's from the pairs, pd/pair_forces.hpp,
+// and the contacts'), with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and held points
+// at rest.
 void accelerate(State& s) {
   bodies::Points& P = s.points;
+  pair_forces(s);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const ForceDensity f = force_density(s, i);
+    const ForceDensity f{s.pair_bonds[i].head<3>(), s.pair_control[i].head<3>(),
+                         contact_density(s, i)};
     for (int d = 0; d < 3; ++d) {
       s.control_force[d][i] = f.control[d];
       s.contact_force[d][i] = f.contact[d];
