@@ -146,6 +146,10 @@ struct ImpactMetrics {
 // How strongly a bond of the family counts in the shape tensor and the force state (PD paper
 // eqs 5-7): omega = 1, or omega = delta / |xi|.
 enum class Influence { Constant, InverseDistance };
+// The stiffness of the zero-energy-mode control's increments: the material's elastic one in
+// every direction, or, where the material flows, the tangent one along the flow direction
+// (pd/control_along_flow.hpp).
+enum class ControlStiffness { Elastic, Flow };
 
 // The correspondence peridynamics solver (solver.method: peridynamics; docs/pd.md).
 struct Peridynamics {
@@ -154,6 +158,7 @@ struct Peridynamics {
   // G_s of the zero-energy-mode control (Silling 2017): the penalty on the non-uniform part of a
   // bond's deformation, in units of the bond micromodulus 18 K / (pi delta^4).
   double stabilization = 0.1;
+  ControlStiffness control_stiffness = ControlStiffness::Elastic;
   // Points of different bodies closer than contact_distance x spacing repel with the short-range
   // force of contact_stiffness x the micromodulus (Parks et al. 2008, as LAMMPS's PERI package).
   double contact_distance = 0.9;

@@ -38,6 +38,8 @@ inline constexpr Names<Method, 2> kMethodNames{
 
 inline constexpr Names<Influence, 2> kInfluenceNames{
     {{{"constant", Influence::Constant}, {"inverse_distance", Influence::InverseDistance}}}};
+inline constexpr Names<ControlStiffness, 2> kControlStiffnessNames{
+    {{{"elastic", ControlStiffness::Elastic}, {"flow", ControlStiffness::Flow}}}};
 
 inline constexpr Names<Geometry, 2> kGeometryNames{
     {{{"3d", Geometry::ThreeD}, {"axisymmetric", Geometry::Axisymmetric}}}};
@@ -166,6 +168,7 @@ void fields(IO& io, Peridynamics& p) {
               Range{2.0, 6.0, false, false});
   io.scalar("influence", p.influence, kInfluenceNames, kOptional);
   io.quantity("stabilization", p.stabilization, units::kDimensionless, kOptional, kNonNegative);
+  io.scalar("control_stiffness", p.control_stiffness, kControlStiffnessNames, kOptional);
   io.quantity("contact_distance", p.contact_distance, units::kDimensionless, kOptional, kFraction);
   io.quantity("contact_stiffness", p.contact_stiffness, units::kDimensionless, kOptional,
               kNonNegative);

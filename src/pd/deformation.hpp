@@ -75,21 +75,18 @@ inline MomentMatrix moment_matrix(const Families& fam, const Neighbours& N,
   return M;
 }
 
-// Sums over a point's family that do not change (pd/forces.hpp): sum omega xi V_j, the factor
-// of A_i in eq 8 (zero on a symmetric family), and sum omega q(xi) / |xi| V_j, the factor of C_i
-// in the control.
+// A sum over a point's family that does not change (pd/pair_forces.hpp): sum omega xi V_j, the
+// factor of A_i in eq 8 (zero on a symmetric family).
 struct FamilySums {
   Eigen::Vector3d bond = Eigen::Vector3d::Zero();  // m^4
-  Monomials control = Monomials::Zero();           // m^2
 };
 
 inline FamilySums family_sums(const Families& fam, const Neighbours& N, const BondWeights& weights,
                               std::size_t i) {
   FamilySums sums;
   for_each_bond(fam, N, weights, i,
-                [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double length, double w) {
+                [&](std::size_t, std::size_t, const Eigen::Vector3d& xi, double, double w) {
                   sums.bond += w * xi;
-                  sums.control += w / length * monomials(xi, weights.delta);
                 });
   return sums;
 }
@@ -97,31 +94,34 @@ inline FamilySums family_sums(const Families& fam, const Neighbours& N, const Bo
 struct Deformation {
   Eigen::Matrix3d F;     // eq 5
   Eigen::Matrix3d Fdot;  // its rate, the same sum over the velocity state
-  QuadraticMap fit;      // the second-order fit of the positions (pd/quadratic_fit.hpp)
+  // The second-order fit of the velocities (pd/quadratic_fit.hpp), Cdot: v_j - v_i ~ Cdot q(xi),
+  // the rate of the positions' fit C, which the zero-energy-mode control integrates
+  // (pd/forces.hpp).
+  QuadraticMap velocity_fit;
 };
 
 // Eq 5, F = [sum omega Y (x) xi V_j] K^-1 with Y = y_j - y_i in the current positions, and
 // Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28). The same sum
-// over the bonds' monomials q gives the second-order fit C = [sum omega Y (x) q V_j] M^-1; the
-// first three monomials are xi / delta, so the sum of eq 5 is delta times its first columns.
-// The sums run on padded columns, one register each.
+// over the bonds' monomials q gives the velocities' second-order fit Cdot = [sum omega
+// (v_j - v_i) (x) q V_j] M^-1; the first three monomials are xi / delta, so the sum of Fdot is
+// delta times its first columns. The sums run on padded columns, one register each.
 inline Deformation deformation(const Families& fam, const Neighbours& N, const BondWeights& weights,
                                const Eigen::Matrix3d& K_inverse, const MomentMatrix& M_inverse,
                                std::size_t i) {
   const double delta = weights.delta;
   const Eigen::Vector4d y_i = N.position[i], v_i = N.velocity[i];
-  QuadraticMap YQ = QuadraticMap::Zero();
-  Eigen::Matrix<double, 4, 3> VX = Eigen::Matrix<double, 4, 3>::Zero();
+  QuadraticMap VQ = QuadraticMap::Zero();
+  Eigen::Matrix<double, 4, 3> YX = Eigen::Matrix<double, 4, 3>::Zero();
   for_each_bond(fam, N, weights, i,
                 [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double w) {
                   const Eigen::Vector4d wY = w * (N.position[j] - y_i);
                   const Eigen::Vector4d wV = w * (N.velocity[j] - v_i);
                   const Monomials q = monomials(xi, delta);
-                  for (int k = 0; k < 9; ++k) YQ.col(k) += q[k] * wY;
-                  for (int k = 0; k < 3; ++k) VX.col(k) += xi[k] * wV;
+                  for (int k = 0; k < 9; ++k) VQ.col(k) += q[k] * wV;
+                  for (int k = 0; k < 3; ++k) YX.col(k) += xi[k] * wY;
                 });
-  return {delta * YQ.topLeftCorner<3, 3>() * K_inverse, VX.topRows<3>() * K_inverse,
-          YQ.lazyProduct(M_inverse)};
+  return {YX.topRows<3>() * K_inverse, delta * VQ.topLeftCorner<3, 3>() * K_inverse,
+          VQ.lazyProduct(M_inverse)};
 }
 
 }  // namespace coldspray::pd

@@ -1,5 +1,9 @@
 #include "pd/forces.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
+#include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
 #include "pd/quadratic_fit.hpp"
 #include "pd/tensor_field.hpp"
@@ -15,35 +19,58 @@ Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
   return law.stiffness * (law.distance - length) * N.volume[j] / length * r;
 }
 
+Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t j,
+                                     std::size_t bond) {
+  const PairSchedule& p = s.pairs;
+  if (j > i) {
+    const Eigen::Vector3d& e = s.control_displacement[p.pair_index[i] + bond - p.first_pair[i]];
+    return {e[0], e[1], e[2], 0.0};
+  }
+  const Families& fam = s.families;
+  const auto first = fam.neighbour.begin() + static_cast<std::ptrdiff_t>(fam.begin[j]);
+  const auto end = fam.neighbour.begin() + static_cast<std::ptrdiff_t>(fam.begin[j + 1]);
+  const auto at = std::lower_bound(first, end, static_cast<std::uint32_t>(i));
+  const std::size_t bond_of_j = static_cast<std::size_t>(at - fam.neighbour.begin());
+  const Eigen::Vector3d& e = s.control_displacement[p.pair_index[j] + bond_of_j - p.first_pair[j]];
+  return {-e[0], -e[1], -e[2], 0.0};
+}
+
 ForceDensity force_density(const State& s, std::size_t i) {
   const Neighbours& N = s.neighbours;
   const std::size_t b = N.body[i];
   const BondWeights weights = bond_weights(s, b);
   const double delta = weights.delta;
   const double control = s.settings.stabilization * s.body_bonds[b].micromodulus;
-  const Eigen::Vector4d y_i = N.position[i];
-  // The sums over j of the terms that hold only i's quantities, from the family's fixed sums.
+  const bool along_flow = control != 0.0 && !s.control_displacement.empty();
+  const Eigen::Vector4d y_i = N.position[i], v_i = N.velocity[i];
+  // The term of eq 8 that holds only i's A, from the family's fixed sum.
   Eigen::Vector4d bonds = s.piola_over_shape[i] * s.family_sums[i].bond;
-  Eigen::Vector4d stabilising = -(s.quadratic_fit[i] * s.family_sums[i].control);
+  Eigen::Vector4d stabilising = Eigen::Vector4d::Zero();
   for_each_bond(
       s.families, N, weights, i,
-      [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double length, double w)
-          __attribute__((always_inline)) {
-            // T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi (eq 7); the A_i part is above.
-            const PaddedTensor& A_j = s.piola_over_shape[j];
-            bonds += w * (xi[0] * A_j.col(0) + xi[1] * A_j.col(1) + xi[2] * A_j.col(2));
-            if (control == 0.0) return;
-            // The non-uniform parts z of the bond (Silling 2017), measured against each end's
-            // second-order fit: z_i = Y - C_i q(xi) at i (its C_i part above), and at j, with the
-            // sign of i's side, Y + C_j q(-xi).
-            const Monomials q = reversed(monomials(xi, delta));
-            const QuadraticMap& C = s.quadratic_fit[j];
-            // C_j q(-xi), in three independent chains.
-            const Eigen::Vector4d Cq = (q[0] * C.col(0) + q[1] * C.col(1) + q[2] * C.col(2)) +
-                                       (q[3] * C.col(3) + q[4] * C.col(4) + q[5] * C.col(5)) +
-                                       (q[6] * C.col(6) + q[7] * C.col(7) + q[8] * C.col(8));
-            stabilising += w / length * (2.0 * (N.position[j] - y_i) + Cq);
-          });
+      [&](std::size_t bond, std::size_t j, const Eigen::Vector3d& xi, double length, double w) {
+        // T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi (eq 7); the A_i part is above.
+        const PaddedTensor& A_j = s.piola_over_shape[j];
+        bonds += w * (xi[0] * A_j.col(0) + xi[1] * A_j.col(1) + xi[2] * A_j.col(2));
+        if (control == 0.0) return;
+        // The rates of the non-uniform parts z of the bond (Silling 2017), measured against each
+        // end's second-order fit: zdot_i = V - Cdot_i q(xi), and at j, with the sign of i's
+        // side, V + Cdot_j q(-xi); less the parts each end's flow softens.
+        const Monomials q = monomials(xi, delta);
+        const Eigen::Vector4d V = N.velocity[j] - v_i;
+        const Eigen::Vector4d zdot_i = V - s.velocity_fit[i] * q;
+        const Eigen::Vector4d zdot_j = V + s.velocity_fit[j] * reversed(q);
+        Eigen::Vector4d zdot = zdot_i + zdot_j;
+        if (along_flow) {
+          // Less the pair's slip rate, plus its fit's share (s.slip_fit, pd/pair_forces.hpp).
+          const Eigen::Vector4d Y = N.position[j] - y_i;
+          const Eigen::Vector4d e = control_displacement(s, i, j, bond);
+          zdot -= softened_part(s.flow_direction[i], s.flow_softening[i], Y, zdot_i, e) +
+                  softened_part(s.flow_direction[j], s.flow_softening[j], Y, zdot_j, e);
+          zdot += s.slip_fit[i] * q - s.slip_fit[j] * reversed(q);
+        }
+        stabilising += w / length * zdot;
+      });
   stabilising *= control;
   return {bonds.head<3>(), stabilising.head<3>(), contact_density(s, i)};
 }

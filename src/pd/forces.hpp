@@ -1,6 +1,7 @@
-// The force density at a point (PD paper eq 14): its bonds' (eqs 7-8), the zero-energy-mode
-// control's (Silling 2017) and the contacts' (pd/contact.hpp), from the state's current
-// positions, deformation gradients F and A = P K^-1.
+// The force density at a point (PD paper eq 14): its bonds' (eqs 7-8), the rate of the
+// zero-energy-mode control's (Silling 2017) and the contacts' (pd/contact.hpp), from the state's
+// current positions and velocities, A = P K^-1, the velocities' second-order fits Cdot and, for
+// the control along the flow, each point's flow direction and softening.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,17 +12,31 @@
 namespace coldspray::pd {
 
 struct ForceDensity {
-  Eigen::Vector3d bonds, control, contact;  // N/m^3
-  Eigen::Vector3d total() const { return bonds + control + contact; }
+  Eigen::Vector3d bonds;         // N/m^3
+  Eigen::Vector3d control_rate;  // N/m^3/s
+  Eigen::Vector3d contact;       // N/m^3
 };
 
-// Eq 8 at point i: sum over its family of T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi V_j;
-// the control: G_s c / |xi| omega (z_i + z_j) V_j with z = Y - C q(xi) seen from either end
-// (C each end's second-order fit, pd/quadratic_fit.hpp), zero under any deformation up to
-// quadratic order, at surfaces too; the contacts: sum over the points of other bodies nearby.
+// Eq 8 at point i: sum over its family of T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi V_j.
+// The control, Silling's penalty G_s c / |xi| omega (z_i + z_j) V_j on the non-uniform parts
+// z = Y - C q(xi) of the bond seen from either end (C each end's second-order fit of the
+// positions, pd/quadratic_fit.hpp), is zero under any deformation up to quadratic order, at
+// surfaces too. Its rate is given here, G_s c / |xi| omega (P_i zdot_i + P_j zdot_j) V_j with
+// zdot = (v_j - v_i) - Cdot q(xi) and P = I less the part each end's flow softens (identity for
+// the elastic control and where the point did not flow; pd/control_along_flow.hpp). The step
+// accumulates it (pd/stepper.cpp): with P = I the sum is Silling's penalty on the current
+// positions to round-off (z is linear in the positions, which move by dt v each step); where
+// P < I the penalty takes the flow's increments with the softened stiffness and gives back
+// nothing it did not take. The contacts: sum over the points of other bodies nearby.
 // The plain per-point path: the step visits each pair once instead (pd/pair_forces.hpp), and the
 // tests hold the two together.
 ForceDensity force_density(const State& s, std::size_t i);
+
+// The penalty displacement e of the pair (i, j) seen from i (pd/control_along_flow.hpp), m: the
+// pair is stored at its lower index, and found in j's family where j < i (j is then real), with
+// the sign of i's side. `bond` is j's place in i's family.
+Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t j,
+                                     std::size_t bond);
 
 // The short-range repulsion on i from j (pd/contact.hpp), N/m^3: zero beyond the contact
 // distance.

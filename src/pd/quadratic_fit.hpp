@@ -1,10 +1,11 @@
-// The second-order fit of the deformation over a family, the reference against which the
+// The second-order fit of a field over a family, the reference against which the
 // zero-energy-mode control (pd/forces.hpp) measures a bond's non-uniform deformation: the
-// weighted least-squares map C with y_j - y_i ~ C q(xi) over the family, q the bond's monomials
-// up to second order. This is the peridynamic differential operator of order two (Madenci,
-// Barut and Futch, CMAME 304 (2016) 408): C = [sum omega Y (x) q V_j] M^-1 with the moment
+// weighted least-squares map C with u_j - u_i ~ C q(xi) over the family, q the bond's monomials
+// up to second order, u the positions (C) or the velocities (its rate Cdot, which the control
+// integrates). This is the peridynamic differential operator of order two (Madenci, Barut and
+// Futch, CMAME 304 (2016) 408): C = [sum omega (u_j - u_i) (x) q V_j] M^-1 with the moment
 // matrix M = sum omega q (x) q V_j. Its first three columns are the gradient (times delta), the
-// other six the curvature; on a symmetric family the first three equal eq 5's F.
+// other six the curvature; on a symmetric family the first three equal eq 5's F (or its rate).
 #pragma once
 
 #include <Eigen/Core>
@@ -16,8 +17,8 @@ namespace coldspray::pd {
 // s2^2 / 2, s3^2 / 2, s1 s2, s1 s3, s2 s3.
 using Monomials = Eigen::Matrix<double, 9, 1>;
 using MomentMatrix = Eigen::Matrix<double, 9, 9>;
-// C: y_j - y_i ~ C q(xi), m. Stored with a fourth row, always zero, so that each column is one
-// four-double (AVX) register in the bond loops, which read C of every neighbour
+// C: u_j - u_i ~ C q(xi), in the field's unit. Stored with a fourth row, always zero, so that each
+// column is one four-double (AVX) register in the bond loops, which read C of every neighbour
 // (pd/deformation.hpp, pd/forces.cpp).
 using QuadraticMap = Eigen::Matrix<double, 4, 9>;
 

@@ -119,11 +119,18 @@ State build_state(const case_file::Case& c) {
   s.family_sums.assign(n, FamilySums{});
   s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
   s.piola_over_shape.assign(N.size(), PaddedTensor::Zero());
-  s.quadratic_fit.assign(N.size(), QuadraticMap::Zero());
+  s.velocity_fit.assign(N.size(), QuadraticMap::Zero());
+  s.flow_direction.assign(N.size(), PaddedTensor::Zero());
+  s.flow_softening.assign(N.size(), 0.0);
   invert_moments(c, s);
   s.pairs = pair_schedule(s.families, n);
   s.pair_bonds.assign(n, Eigen::Vector4d::Zero());
   s.pair_control.assign(n, Eigen::Vector4d::Zero());
+  if (s.settings.control_stiffness == case_file::ControlStiffness::Flow) {
+    s.control_displacement.assign(s.pairs.pair_index[n], Eigen::Vector3d::Zero());
+    s.slip_fit.assign(N.size(), QuadraticMap::Zero());
+    s.slipped.assign(N.size(), 0);
+  }
 
   s.held.assign(n, 0);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {

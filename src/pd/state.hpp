@@ -47,8 +47,10 @@ struct Ghost {
 // The order in which pd/pair_forces.hpp visits each pair of neighbours once: per real point the
 // first bond whose neighbour index exceeds its own, and the point blocks [block[k],
 // block[k + 1]) that run in parallel two colours at a time.
+// pair_index[i] numbers i's first pair; its pairs follow in family order (real points only).
 struct PairSchedule {
   std::vector<std::size_t> first_pair;
+  std::vector<std::size_t> pair_index;
   std::vector<std::size_t> block;
 };
 
@@ -70,14 +72,27 @@ struct State : bodies::Bodies {
   std::vector<FamilySums> family_sums;  // of the real points
   TensorField deformation_gradient;     // F (eq 5) of the last force evaluation, real points
   // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
-  // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5) and the second-order fit C of the positions.
+  // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5), the second-order fit Cdot of the velocities
+  // (1/s), and what the control's stiffness along the flow needs (pd/control_scale.hpp): the
+  // unit flow direction N = s / |s| (padded) and the softening 1 - H / (3G + H), 0 where the
+  // point did not flow in the step or the control is elastic.
   PaddedTensorField piola_over_shape;
-  std::vector<QuadraticMap> quadratic_fit;
-  // The bond and control force densities of the real points (pd/pair_forces.hpp), N/m^3.
+  std::vector<QuadraticMap> velocity_fit;
+  PaddedTensorField flow_direction;
+  std::vector<double> flow_softening;
+  // The bond and control force densities of the real points (pd/pair_forces.hpp): N/m^3 for the
+  // bonds, N/m^3/s for the control's rate.
   std::vector<Eigen::Vector4d> pair_bonds, pair_control;
+  // With the control along the flow (pd/control_along_flow.hpp), each pair's penalty
+  // displacement e, m, seen from its lower index (PairSchedule::pair_index), and per point (real,
+  // then ghosts) the second-order fit of half the pairs' slip rates, 1/s; empty otherwise.
+  std::vector<Eigen::Vector3d> control_displacement;
+  std::vector<QuadraticMap> slip_fit;
+  std::vector<std::uint8_t> slipped;                // whether a point's slip fit is not zero
   std::array<std::vector<double>, 3> acceleration;  // m/s^2
-  // The parts of the last force density from the zero-energy-mode control and from contact,
-  // N/m^3, whose work the step books once the velocities are those of the step's end.
+  // The zero-energy-mode control's force density, accumulated step by step from its rate
+  // (pd/forces.hpp), and the last contact force density, N/m^3, whose works the step books once
+  // the velocities are those of the step's end.
   std::array<std::vector<double>, 3> control_force, contact_force;
   std::array<std::vector<double>, 3> external_force;  // the dashpots' forces, N
   // Per point, the velocity components held at zero: bit d for axis d (fixed and roller faces).

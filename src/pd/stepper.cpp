@@ -10,6 +10,7 @@
 #include "bodies/material_state.hpp"
 #include "bodies/update_points.hpp"
 #include "materials/artificial_viscosity.hpp"
+#include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
 #include "pd/pair_forces.hpp"
@@ -50,11 +51,13 @@ void drift(State& s) {
 }
 
 // Eqs 5, 28-31 at every point: F and L = Fdot F^-1 from the family, then the materials' update
-// (the MPM's, bodies/update_points.hpp) and A = P K^-1 with P = J (sigma - q I) F^-T. Returns the
-// largest c + |v|.
+// (the MPM's, bodies/update_points.hpp), A = P K^-1 with P = J (sigma - q I) F^-T and, for the
+// control along the flow, the point's flow direction and softening (pd/control_along_flow.hpp).
+// Returns the largest c + |v|.
 double update_stress(State& s) {
   bodies::Points& P = s.points;
   const double dt = s.dt;
+  const bool along_flow = s.settings.control_stiffness == case_file::ControlStiffness::Flow;
   double max_speed = 0.0;
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const bodies::BodyRange& body = s.bodies[b];
@@ -64,7 +67,7 @@ double update_stress(State& s) {
         const Deformation def = deformation(s.families, s.neighbours, weights,
                                             tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
         store_tensor(def.F, s.deformation_gradient, i);
-        s.quadratic_fit[i] = def.fit;
+        s.velocity_fit[i] = def.velocity_fit;
         materials::StepKinematics k;
         k.set_velocity_gradient(def.Fdot * def.F.inverse(), dt);  // eqs 28-29
         k.J_new = def.F.determinant();
@@ -73,6 +76,7 @@ double update_stress(State& s) {
       auto complete_point = [&](std::size_t i, const materials::StepKinematics& k,
                                 const materials::PointState& state) {
         const double eqps_before = P.eqps[i];
+        const bool flowed = state.eqps > eqps_before;
         bodies::store_point_state(state, P, i);
         if (state.eqps > eqps_before)
           P.plastic_work[i] +=
@@ -84,6 +88,11 @@ double update_stress(State& s) {
         P.viscous_work[i] -= q * trace_D * dt * P.volume0[i] * state.J;
         const Eigen::Matrix3d F = tensor_at(s.deformation_gradient, i);
         Eigen::Matrix3d sigma = bodies::stress_at(P, i).matrix();
+        if (along_flow) {
+          s.flow_softening[i] =
+              flow_softening(models, state, flowed, body.material.density / state.J);
+          store_tensor(flow_direction(sigma), s.flow_direction, i);
+        }
         sigma.diagonal().array() -= q;
         const Eigen::Matrix3d A =
             state.J * sigma * F.inverse().transpose() * tensor_at(s.shape_inverse, i);
@@ -103,9 +112,10 @@ double update_stress(State& s) {
   return max_speed;
 }
 
-// a = f / rho0 at every point (the bonds' and the control's from the pairs, pd/pair_forces.hpp,
-// and the contacts'), with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and held points
-// at rest.
+// a = f / rho0 at every point (the bonds' and the control's rate from the pairs,
+// pd/pair_forces.hpp, the control's force advanced by its rate over the step that moved the
+// points, and the contacts'), with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and held
+// points at rest.
 void accelerate(State& s) {
   bodies::Points& P = s.points;
   pair_forces(s);
@@ -113,16 +123,17 @@ void accelerate(State& s) {
   for (std::size_t i = 0; i < P.size(); ++i) {
     const ForceDensity f{s.pair_bonds[i].head<3>(), s.pair_control[i].head<3>(),
                          contact_density(s, i)};
+    Eigen::Vector3d total = f.bonds + f.contact;
     for (int d = 0; d < 3; ++d) {
-      s.control_force[d][i] = f.control[d];
+      s.control_force[d][i] += s.dt * f.control_rate[d];
       s.contact_force[d][i] = f.contact[d];
+      total[d] += s.control_force[d][i];
     }
     // The points another body pushes on: the contact area of the impact metrics.
     P.touching[i] = f.contact.squaredNorm() > 0.0;
     P.touched[i] |= P.touching[i];
     const double rho0 = s.bodies[P.body[i]].material.density;
-    for (int d = 0; d < 3; ++d)
-      s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : f.total()[d] / rho0;
+    for (int d = 0; d < 3; ++d) s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : total[d] / rho0;
   }
   for (bodies::AbsorbingPoint& a : s.absorbing)
     for (int d = 0; d < 3; ++d) {

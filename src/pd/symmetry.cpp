@@ -64,8 +64,16 @@ void refresh_ghost_tensors(State& s) {
     const Eigen::Matrix3d R = reflection(ghost.flips);
     const std::size_t j = s.neighbours.real + g, i = ghost.source;
     store_tensor(R * s.piola_over_shape[i].topRows<3>() * R, s.piola_over_shape, j);
-    s.quadratic_fit[j] = mirrored(s.quadratic_fit[i], ghost.flips);
+    s.velocity_fit[j] = mirrored(s.velocity_fit[i], ghost.flips);
+    store_tensor(R * s.flow_direction[i].topRows<3>() * R, s.flow_direction, j);
+    s.flow_softening[j] = s.flow_softening[i];
   }
+}
+
+void refresh_ghost_slip_fits(State& s) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t g = 0; g < s.ghosts.size(); ++g)
+    s.slip_fit[s.neighbours.real + g] = mirrored(s.slip_fit[s.ghosts[g].source], s.ghosts[g].flips);
 }
 
 void refresh_neighbours(State& s) {

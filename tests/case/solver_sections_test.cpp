@@ -51,6 +51,18 @@ TEST(SolverSections, UnknownPeridynamicsKeysAreErrors) {
                "peridynamics.horizon", "unknown key 'horizon'");
 }
 
+TEST(SolverSections, ControlStiffnessIsElasticOrFlow) {
+  expect_error("verification/pd-elastic-spheres.yaml",
+               {{"peridynamics.control_stiffness", "plastic"}}, "peridynamics.control_stiffness",
+               "elastic");
+  const Case c = load_case(example("verification/pd-elastic-spheres.yaml"),
+                           {{"peridynamics.control_stiffness", "flow"}});
+  EXPECT_EQ(c.peridynamics->control_stiffness, ControlStiffness::Flow);
+  EXPECT_EQ(
+      load_case(example("verification/pd-elastic-spheres.yaml")).peridynamics->control_stiffness,
+      ControlStiffness::Elastic);
+}
+
 TEST(SolverSections, TheBondingModelIsTheMpms) {
   expect_error("verification/pd-elastic-spheres.yaml", {{"bonding.model", "energy"}},
                "bonding.model", "must be none with solver.method peridynamics");

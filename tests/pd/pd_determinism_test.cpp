@@ -47,5 +47,32 @@ TEST(PeridynamicDeterminism, ElasticSpheresAreBitIdenticalOnOneAndTwoThreads) {
   }
 }
 
+// The coarse quarter Cu impact with the control along the flow (pd/control_along_flow.hpp),
+// whose pairs keep their penalty displacements and whose slip fits gather from both ends of each
+// pair, over 60 steps of plastic flow.
+TEST(PeridynamicDeterminism, ControlAlongTheFlowIsBitIdenticalOnOneAndTwoThreads) {
+  const int threads = omp_get_max_threads();
+  auto run = [](int n) {
+    omp_set_num_threads(n);
+    return testing::run_example("verification/pd-quarter-impact.yaml",
+                                {{"symmetry.x", "0 um"},
+                                 {"symmetry.y", "0 um"},
+                                 {"peridynamics.control_stiffness", "flow"}},
+                                60);
+  };
+  const State one = run(1), two = run(2);
+  omp_set_num_threads(threads);
+  EXPECT_GE(one.pairs.block.size(), 5u);
+  EXPECT_GT(std::count(one.slipped.begin(), one.slipped.end(), 1), 0);
+  ASSERT_EQ(one.control_displacement.size(), two.control_displacement.size());
+  for (std::size_t k = 0; k < one.control_displacement.size(); ++k)
+    ASSERT_EQ(one.control_displacement[k], two.control_displacement[k]) << "pair " << k;
+  for (std::size_t p = 0; p < one.points.size(); ++p)
+    for (int d = 0; d < 3; ++d) {
+      ASSERT_EQ(one.points.position[d][p], two.points.position[d][p]) << "point " << p;
+      ASSERT_EQ(one.points.velocity[d][p], two.points.velocity[d][p]) << "point " << p;
+    }
+}
+
 }  // namespace
 }  // namespace coldspray::pd

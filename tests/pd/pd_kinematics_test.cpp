@@ -1,8 +1,9 @@
 // Correspondence peridynamics against hand references: the families against a brute-force
 // search; the patch test (a homogeneous deformation gives the exact F and Fdot at every point,
-// PD paper eqs 5-6); the zero-energy-mode control (Silling 2017), which resists a mode that
-// leaves F unchanged and leaves a homogeneous deformation untouched; and the bond forces, whose
-// sum over all points (weighted by volume) vanishes for any deformation.
+// PD paper eqs 5-6); the zero-energy-mode control (Silling 2017), whose rate resists a mode that
+// leaves F unchanged and leaves a homogeneous deformation untouched, and which, accumulated over
+// the steps, is Silling's penalty on the current positions; and the bond forces, whose sum over
+// all points (weighted by volume) vanishes for any deformation.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -13,6 +14,7 @@
 #include "case/load.hpp"
 #include "core/error.hpp"
 #include "metrics/energy.hpp"
+#include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
 #include "pd/setup.hpp"
@@ -134,14 +136,14 @@ TEST(PeridynamicKinematics, HomogeneousDeformationGivesTheExactGradientAtEveryPo
   }
 }
 
-// Sets every point's F and second-order fit from its family, and A = P K^-1 from a given uniform
-// Cauchy stress.
+// Sets every point's F and the second-order fit of its velocities from its family, and
+// A = P K^-1 from a given uniform Cauchy stress.
 void set_gradients(State& s, const Eigen::Matrix3d& sigma) {
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Deformation d = deformation(s.families, s.neighbours, bond_weights(s, 0),
                                       tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
     store_tensor(d.F, s.deformation_gradient, i);
-    s.quadratic_fit[i] = d.fit;
+    s.velocity_fit[i] = d.velocity_fit;
     const Eigen::Matrix3d A =
         d.F.determinant() * sigma * d.F.inverse().transpose() * tensor_at(s.shape_inverse, i);
     store_tensor(A, s.piola_over_shape, i);
@@ -160,48 +162,53 @@ bool interior(const State& s, std::size_t i) {
 
 TEST(PeridynamicControl, ResistsAZeroEnergyModeAndLeavesHomogeneousDeformationAlone) {
   State s = block();
-  const double h = 0.25e-6, amplitude = 1e-9;
-  // u = a (-1)^(i+j+k) e_x on the lattice: xi and -xi see the same difference, so the sums of
-  // eq 5 cancel and F = I at interior points, a deformation the correspondence force cannot see.
+  const double h = 0.25e-6, amplitude = 1.0;
+  // v = a (-1)^(i+j+k) e_x on the lattice: xi and -xi see the same difference, so the sums of
+  // eq 5 cancel and Fdot = 0 at interior points, a motion the correspondence force cannot see.
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     long parity = 0;
     for (int d = 0; d < 3; ++d) parity += std::lround(s.neighbours.reference[i][d] / h - 0.5);
-    s.points.position[0][i] += (parity % 2 == 0 ? 1.0 : -1.0) * amplitude;
+    s.points.velocity[0][i] = (parity % 2 == 0 ? 1.0 : -1.0) * amplitude;
   }
   refresh_neighbours(s);
-  set_gradients(s, Eigen::Matrix3d::Zero());
   std::size_t checked = 0;
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     if (!interior(s, i)) continue;
     ++checked;
-    EXPECT_LT((tensor_at(s.deformation_gradient, i) - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    const Deformation d = deformation(s.families, s.neighbours, bond_weights(s, 0),
+                                      tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
+    EXPECT_LT(d.Fdot.norm(), 1e-12 * amplitude / h);
+  }
+  set_gradients(s, Eigen::Matrix3d::Zero());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    if (!interior(s, i)) continue;
     const ForceDensity f = force_density(s, i);
     EXPECT_EQ(f.bonds.norm(), 0.0);
-    const double u = s.points.position[0][i] - s.neighbours.reference[i][0];
-    EXPECT_LT(f.control[0] * u, 0.0) << "point " << i << ": the control must restore";
+    EXPECT_LT(f.control_rate[0] * s.points.velocity[0][i], 0.0)
+        << "point " << i << ": the control must resist";
   }
   EXPECT_GT(checked, 20u);
 
-  // A homogeneous stretch and shear: z = Y - F xi = 0 on every bond, so no control force
-  // anywhere, surface points included.
+  // A homogeneous velocity gradient: zdot = (v_j - v_i) - Fdot xi = 0 on every bond, so no
+  // control anywhere, surface points included.
   State t = block();
-  Eigen::Matrix3d F0;
-  F0 << 1.01, 0.02, 0.0, 0.0, 0.99, 0.01, 0.0, 0.0, 1.005;
-  deform(t, F0, Eigen::Matrix3d::Zero());
+  Eigen::Matrix3d L0;
+  L0 << 1e6, 2e6, 0.0, 0.0, -1e6, 1e6, 0.0, 0.0, 5e5;
+  deform(t, Eigen::Matrix3d::Identity(), L0);
   set_gradients(t, Eigen::Matrix3d::Zero());
   double worst = 0.0;
   for (std::size_t i = 0; i < t.points.size(); ++i)
-    worst = std::max(worst, force_density(t, i).control.norm());
-  // The scale: the control's force on the zero-energy mode above, per unit of displacement.
+    worst = std::max(worst, force_density(t, i).control_rate.norm());
+  // The scale: the control's rate on the zero-energy mode above, per unit of velocity.
   const double unit = s.settings.stabilization * s.body_bonds[0].micromodulus * 1e-6;
   EXPECT_LT(worst, 1e-10 * unit);
 }
 
-// A smooth non-uniform deformation, y = X + u with u quadratic in X: the second-order fit
-// reproduces every bond exactly, so the control exerts no force at any point, surface points
-// included. Measured against the linear map F of eq 5 instead (Silling's z = Y - F xi), the
-// truncated families of the surface points see the curvature as non-uniformity: that is the
-// force the second-order reference removes (docs/pd.md, "Zero-energy modes").
+// A smooth non-uniform motion, v = u(X) / (1 s) with u quadratic in X: the second-order fit
+// reproduces every bond exactly, so the control's rate is zero at every point, surface points
+// included. Measured against the linear map of eq 5 instead (Silling's zdot = (v_j - v_i) -
+// Fdot xi), the truncated families of the surface points see the curvature as non-uniformity:
+// that is the force the second-order reference removes (docs/pd.md, "Zero-energy modes").
 TEST(PeridynamicControl, LeavesAQuadraticDeformationAloneAtSurfacesToo) {
   State s = block();
   const double strain = 1e-3, L = 2e-6;
@@ -209,7 +216,7 @@ TEST(PeridynamicControl, LeavesAQuadraticDeformationAloneAtSurfacesToo) {
     const Eigen::Vector3d X = s.neighbours.reference[i].head<3>();
     const Eigen::Vector3d u(X[0] * X[0] - 0.5 * X[1] * X[2], X[1] * X[0] + X[2] * X[2],
                             0.3 * X[0] * X[2] - X[1] * X[1]);
-    for (int d = 0; d < 3; ++d) s.points.position[d][i] = X[d] + strain / L * u[d];
+    for (int d = 0; d < 3; ++d) s.points.velocity[d][i] = strain / L * u[d];
   }
   refresh_neighbours(s);
   set_gradients(s, Eigen::Matrix3d::Zero());
@@ -217,43 +224,88 @@ TEST(PeridynamicControl, LeavesAQuadraticDeformationAloneAtSurfacesToo) {
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     for_each_bond(s.families, s.neighbours, bond_weights(s, 0), i,
                   [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double) {
-                    const Eigen::Vector3d Y =
-                        (s.neighbours.position[j] - s.neighbours.position[i]).head<3>();
-                    const Eigen::Vector3d z =
-                        Y - (s.quadratic_fit[i] * monomials(xi, s.body_bonds[0].horizon)).head<3>();
-                    worst_fit = std::max(worst_fit, z.norm() / Y.norm());
+                    const Eigen::Vector3d V =
+                        (s.neighbours.velocity[j] - s.neighbours.velocity[i]).head<3>();
+                    const Eigen::Vector3d zdot =
+                        V - (s.velocity_fit[i] * monomials(xi, s.body_bonds[0].horizon)).head<3>();
+                    worst_fit = std::max(worst_fit, zdot.norm() / V.norm());
                   });
-    worst = std::max(worst, force_density(s, i).control.norm());
+    worst = std::max(worst, force_density(s, i).control_rate.norm());
   }
-  // The same field against the linear reference: C = [delta F, 0].
+  // The same field against the linear reference: Cdot = [delta Fdot, 0].
   State t = s;
   for (std::size_t i = 0; i < t.points.size(); ++i) {
-    t.quadratic_fit[i].setZero();
-    t.quadratic_fit[i].topLeftCorner<3, 3>() =
-        t.body_bonds[0].horizon * tensor_at(t.deformation_gradient, i);
+    const Deformation d = deformation(t.families, t.neighbours, bond_weights(t, 0),
+                                      tensor_at(t.shape_inverse, i), t.moment_inverse[i], i);
+    t.velocity_fit[i].setZero();
+    t.velocity_fit[i].topLeftCorner<3, 3>() = t.body_bonds[0].horizon * d.Fdot;
   }
   for (std::size_t i = 0; i < t.points.size(); ++i)
     if (!interior(t, i))
-      linear_surface = std::max(linear_surface, force_density(t, i).control.norm());
+      linear_surface = std::max(linear_surface, force_density(t, i).control_rate.norm());
   EXPECT_LT(worst_fit, 1e-10);
   EXPECT_GT(linear_surface, 0.0);
   EXPECT_LT(worst, 1e-8 * linear_surface);
 }
 
-TEST(PeridynamicForces, InternalForcesSumToZero) {
+// The control's force is accumulated from its rate step by step (pd/forces.hpp). In an elastic
+// body (r = 1) the sum is Silling's penalty G_s c / |xi| omega (z_i + z_j) on the current
+// positions, z = Y - C q(xi), because z is linear in the positions and velocity Verlet moves
+// them by dt v^{n+1/2}, the velocities the rate is taken with. The penalty on the positions is
+// the same force function with the positions in place of the velocities (C is then the
+// positions' fit): the reference here.
+TEST(PeridynamicControl, AccumulatesToSillingsPenaltyOnThePositions) {
   State s = block();
   for (std::size_t i = 0; i < s.points.size(); ++i)
-    for (int d = 0; d < 3; ++d) s.points.position[d][i] += 1e-9 * std::sin(1.7 * i + 0.9 * d);
+    for (int d = 0; d < 3; ++d) s.points.velocity[d][i] = 2.0 * std::sin(1.3 * i + 2.1 * d);
+  for (int k = 0; k < 40; ++k) {
+    s.dt = stable_time_step(s, 0.6);
+    step(s);
+  }
+  State t = s;
+  for (std::size_t i = 0; i < t.points.size(); ++i)
+    for (int d = 0; d < 3; ++d) t.points.velocity[d][i] = t.points.position[d][i];
+  refresh_neighbours(t);
+  set_gradients(t, Eigen::Matrix3d::Zero());
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    EXPECT_EQ(s.flow_softening[i], 0.0);  // the elastic control
+    const Eigen::Vector3d penalty = force_density(t, i).control_rate;
+    worst = std::max(worst, (vector_at(s.control_force, i) - penalty).norm());
+    largest = std::max(largest, penalty.norm());
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(worst, 1e-9 * largest);  // measured 1.0e-11 (40 steps)
+}
+
+TEST(PeridynamicForces, InternalForcesSumToZero) {
+  State s = block();
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    for (int d = 0; d < 3; ++d) {
+      s.points.position[d][i] += 1e-9 * std::sin(1.7 * i + 0.9 * d);
+      s.points.velocity[d][i] = std::cos(0.7 * i + 1.3 * d);
+    }
+    // Unequal ends: softened along flow directions that differ from point to point.
+    s.flow_softening[i] = 0.5 + 0.5 * std::sin(0.3 * i);
+    Eigen::Matrix3d sigma_i;
+    sigma_i << std::sin(0.4 * i), 1.0, 0.3, 1.0, std::cos(0.9 * i), -0.5, 0.3, -0.5, 0.2;
+    store_tensor(flow_direction(sigma_i), s.flow_direction, i);
+  }
+  refresh_neighbours(s);
   Eigen::Matrix3d sigma;
   sigma << 1e8, 2e7, 0.0, 2e7, -5e7, 1e7, 0.0, 1e7, 3e7;
   set_gradients(s, sigma);
-  Eigen::Vector3d total = Eigen::Vector3d::Zero(), scale = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bonds = Eigen::Vector3d::Zero(), bond_scale = Eigen::Vector3d::Zero();
+  Eigen::Vector3d control = Eigen::Vector3d::Zero(), control_scale = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const ForceDensity f = force_density(s, i);
-    total += (f.bonds + f.control) * s.points.volume0[i];
-    scale += (f.bonds + f.control).cwiseAbs() * s.points.volume0[i];
+    bonds += f.bonds * s.points.volume0[i];
+    bond_scale += f.bonds.cwiseAbs() * s.points.volume0[i];
+    control += f.control_rate * s.points.volume0[i];
+    control_scale += f.control_rate.cwiseAbs() * s.points.volume0[i];
   }
-  EXPECT_LT(total.norm(), 1e-12 * scale.norm());
+  EXPECT_LT(bonds.norm(), 1e-12 * bond_scale.norm());
+  EXPECT_LT(control.norm(), 1e-12 * control_scale.norm());
 }
 
 // A block moving down at 10 m/s whose bottom face is held from t = 0: the hold takes the

@@ -83,9 +83,10 @@ void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcep
 namespace coldspray {
 namespace {
 
-case_file::Case example(const std::string& name) {
-  return case_file::load_case(std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/" + name +
-                              ".yaml");
+case_file::Case example(const std::string& name,
+                        const std::vector<case_file::Override>& overrides = {}) {
+  return case_file::load_case(
+      std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/" + name + ".yaml", overrides);
 }
 
 // A step of either solver at its stable time step (found by argument-dependent lookup).
@@ -135,13 +136,18 @@ TEST(StepAllocation, TheMpmStepAllocatesNothing) {
   EXPECT_EQ(counted, 0);
 }
 
+// With the elastic control and with the control along the flow (its pairs' histories and slip
+// fits are allocated at set-up).
 TEST(StepAllocation, ThePeridynamicsStepAllocatesNothingBetweenContactRebuilds) {
-  const case_file::Case c = example("pd-quarter-impact");
-  pd::State s = pd::build_state(c);
-  const auto [counted, steps] = allocations_in_steps(
-      s, c.solver.cfl, 20, 40, [](const pd::State& st) { return st.contact.builds; });
-  EXPECT_GT(steps, 20);  // most steps reuse the contact list
-  EXPECT_EQ(counted, 0);
+  for (const char* control : {"elastic", "flow"}) {
+    const case_file::Case c =
+        example("pd-quarter-impact", {{"peridynamics.control_stiffness", control}});
+    pd::State s = pd::build_state(c);
+    const auto [counted, steps] = allocations_in_steps(
+        s, c.solver.cfl, 20, 40, [](const pd::State& st) { return st.contact.builds; });
+    EXPECT_GT(steps, 20) << control;  // most steps reuse the contact list
+    EXPECT_EQ(counted, 0) << control;
+  }
 }
 
 }  // namespace
