@@ -23,7 +23,7 @@ Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t 
                                      std::size_t bond) {
   const PairSchedule& p = s.pairs;
   if (j > i) {
-    const Eigen::Vector3d& e = s.control_displacement[p.pair_index[i] + bond - p.first_pair[i]];
+    const Eigen::Vector3d& e = s.control_displacement[p.pair(i, bond)];
     return {e[0], e[1], e[2], 0.0};
   }
   const Families& fam = s.families;
@@ -31,7 +31,7 @@ Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t 
   const auto end = fam.neighbour.begin() + static_cast<std::ptrdiff_t>(fam.begin[j + 1]);
   const auto at = std::lower_bound(first, end, static_cast<std::uint32_t>(i));
   const std::size_t bond_of_j = static_cast<std::size_t>(at - fam.neighbour.begin());
-  const Eigen::Vector3d& e = s.control_displacement[p.pair_index[j] + bond_of_j - p.first_pair[j]];
+  const Eigen::Vector3d& e = s.control_displacement[p.pair(j, bond_of_j)];
   return {-e[0], -e[1], -e[2], 0.0};
 }
 

@@ -76,8 +76,7 @@ void visit_pairs(State& s, const BondWeights& weights, bool controlled, std::siz
                (r[6] * C_j.col(6) + r[7] * C_j.col(7) + r[8] * C_j.col(8)));
       Eigen::Vector4d zdot = zdot_i + zdot_j;
       if constexpr (along_flow) {
-        Eigen::Vector3d& e =
-            s.control_displacement[s.pairs.pair_index[i] + b - s.pairs.first_pair[i]];
+        Eigen::Vector3d& e = s.control_displacement[s.pairs.pair(i, b)];
         const double a_i = s.flow_softening[i], a_j = s.flow_softening[j];
         if (a_i != 0.0 || a_j != 0.0) {
           // The pair's slip rate, the parts its ends' flow softens, and half of it into each
@@ -127,8 +126,7 @@ void visit_slip_pairs(State& s, const BondWeights& weights, std::size_t first, s
       const double omega_beta = influence<kind>(length, delta) * fam.volume_fraction(b);
       const Monomials q = monomials(xi, delta);
       const Eigen::Vector4d kappa = D_i * q - D_j * reversed(q);
-      s.control_displacement[s.pairs.pair_index[i] + b - s.pairs.first_pair[i]] +=
-          s.dt * kappa.head<3>();
+      s.control_displacement[s.pairs.pair(i, b)] += s.dt * kappa.head<3>();
       control += omega_beta * N.volume[j] / length * kappa;
       if (j < N.real) s.pair_control[j] -= omega_beta * V_i / length * kappa;
     }

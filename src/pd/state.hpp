@@ -52,6 +52,10 @@ struct PairSchedule {
   std::vector<std::size_t> first_pair;
   std::vector<std::size_t> pair_index;
   std::vector<std::size_t> block;
+  // The number of the pair (i, j > i) whose j is at `bond` in i's family.
+  std::size_t pair(std::size_t i, std::size_t bond) const {
+    return pair_index[i] + bond - first_pair[i];
+  }
 };
 
 struct State : bodies::Bodies {
