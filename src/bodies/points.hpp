@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace coldspray::bodies {
@@ -67,20 +68,34 @@ struct Points {
   std::size_t size() const { return mass.size(); }
   void resize(std::size_t n);
 
-  // Calls f(v) for every per-point array v (a std::vector of doubles or of integers).
+  // Calls f(name, v) for every per-point array v (a std::vector of doubles or of integers), with
+  // its name in the checkpoints (checkpoint/fields.hpp): the one list of what a point carries.
+  template <class F>
+  void for_each_named_array(F&& f) {
+    static constexpr const char* kAxes[] = {"_x", "_y", "_z"};
+    static constexpr const char* kComponents[] = {"_xx", "_yy", "_zz", "_xy", "_yz", "_xz"};
+    auto axes = [&](const char* name, std::array<std::vector<double>, 3>& a) {
+      for (int d = 0; d < 3; ++d) f(std::string(name) + kAxes[d], a[d]);
+    };
+    axes("position", position);
+    axes("velocity", velocity);
+    axes("half_width", half_width);
+    axes("contact_normal", contact_normal);
+    axes("displacement", displacement);
+    for (int c = 0; c < 6; ++c) f(std::string("stress") + kComponents[c], stress[c]);
+    f("mass", mass), f("volume0", volume0), f("eqps", eqps), f("eqps_rate", eqps_rate);
+    f("return_slope", return_slope), f("temperature", temperature), f("energy", energy);
+    f("J", J), f("flow_stress", flow_stress), f("shear_modulus", shear_modulus);
+    f("sound_speed", sound_speed), f("bulk_viscosity", bulk_viscosity);
+    f("plastic_work", plastic_work), f("viscous_work", viscous_work);
+    f("contact_work", contact_work), f("initial_z", initial_z), f("bond", bond);
+    f("surface", surface), f("touched", touched), f("touching", touching), f("body", body);
+    f("bonded_to", bonded_to), f("id", id);
+  }
+  // Calls f(v) for every per-point array v.
   template <class F>
   void for_each_array(F&& f) {
-    for (auto* a : {&position, &velocity, &half_width, &contact_normal, &displacement})
-      for (auto& v : *a) f(v);
-    for (auto& v : stress) f(v);
-    for (auto* v : {&mass, &volume0, &eqps, &eqps_rate, &return_slope, &temperature, &energy, &J,
-                    &flow_stress, &shear_modulus, &sound_speed, &bulk_viscosity, &plastic_work,
-                    &viscous_work, &contact_work, &initial_z, &bond})
-      f(*v);
-    for (auto* v : {&surface, &touched, &touching}) f(*v);
-    f(body);
-    f(bonded_to);
-    f(id);
+    for_each_named_array([&](const std::string&, auto& v) { f(v); });
   }
 };
 

@@ -189,6 +189,11 @@ struct Output {
   double history_interval = 0.0;   // s; 0 = every step
   double snapshot_interval = 0.0;  // s; 0 = first and last only
   std::vector<Probe> probes;
+  // Checkpoints (run/checkpoints.hpp): every this much simulated time (0: none but the last)
+  // and every this much wall-clock time, keeping the last checkpoint_keep of them.
+  double checkpoint_interval = 0.0;         // s
+  double checkpoint_wall_interval = 600.0;  // s
+  int checkpoint_keep = 2;
 
   friend bool operator==(const Output&, const Output&) = default;
 };

@@ -193,6 +193,10 @@ void fields(IO& io, Output& o) {
   io.quantity("history_interval", o.history_interval, units::kTime, kOptional, kNonNegative);
   io.quantity("snapshot_interval", o.snapshot_interval, units::kTime, kOptional, kNonNegative);
   io.list("probes", o.probes, kOptional);
+  io.quantity("checkpoint_interval", o.checkpoint_interval, units::kTime, kOptional, kNonNegative);
+  io.quantity("checkpoint_wall_interval", o.checkpoint_wall_interval, units::kTime, kOptional,
+              kNonNegative);
+  io.scalar("checkpoint_keep", o.checkpoint_keep, WholeNumber{1}, kOptional);
 }
 
 template <class IO>

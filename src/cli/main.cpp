@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "run/interrupt.hpp"
 
 int main(int argc, char** argv) {
   using namespace coldspray;
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   cli::add_vcrit(app);
   cli::add_calibrate(app);
 
+  run::catch_interrupts();
   try {
     app.parse(argc, argv);
     return kExitOk;
@@ -38,6 +40,9 @@ int main(int argc, char** argv) {
   } catch (const RunFault& e) {
     std::cerr << "fault: " << e.what() << "\n";
     return kExitRunFault;
+  } catch (const run::Interrupted& e) {
+    std::cerr << e.what() << "\n";
+    return 128 + e.signal();
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << "\n";
     return kExitInternal;

@@ -30,6 +30,8 @@ Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostr
   run::RunOptions options;
   options.out_dir = flags.out_dir.empty() ? "out/" + c.name : flags.out_dir;
   options.progress = !flags.quiet;
+  options.restart_from = flags.restart_from;
+  options.initial_state = flags.initial_state;
   const run::Summary s = run::run_case(c, options);
   out << fmt::format(
       "done: {} steps to t = {:.4g} ns in {:.1f} s on {} threads ({:.3g} particle-steps/s)\n"

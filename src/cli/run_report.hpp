@@ -19,6 +19,10 @@ struct RunFlags {
   std::vector<std::string> sets;
   int threads = 0;  // 0: all cores
   bool quiet = false;
+  // `run --restart`: the checkpoint the run continues from, in its own folder (out_dir).
+  std::filesystem::path restart_from;
+  // `run --initial-state`: a checkpoint whose state the case starts from.
+  std::filesystem::path initial_state;
 };
 
 // --out, --set, --threads and --quiet on a subcommand; `flags` must outlive the parse.

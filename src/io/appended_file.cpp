@@ -19,11 +19,24 @@ void write(const std::filesystem::path& path, std::string_view text, std::ios::o
 
 }  // namespace
 
-AppendedFile::AppendedFile(std::filesystem::path path, std::string_view header)
+AppendedFile::AppendedFile(std::filesystem::path path, std::string_view header, Opening opening)
     : path_(std::move(path)) {
-  write(path_, header, std::ios::trunc);
+  if (opening == Opening::Create) write(path_, header, std::ios::trunc);
 }
 
 void AppendedFile::append(std::string_view text) { write(path_, text, std::ios::app); }
+
+std::uintmax_t AppendedFile::length() const { return std::filesystem::file_size(path_); }
+
+void AppendedFile::cut_to(std::uintmax_t length) const {
+  std::error_code error;
+  const std::uintmax_t now = std::filesystem::file_size(path_, error);
+  if (error || now < length)
+    throw InputError(path_.string(), "",
+                     fmt::format("has {} bytes where its checkpoint recorded {}: the run's tables "
+                                 "were changed since, so it cannot continue them",
+                                 error ? 0 : now, length));
+  std::filesystem::resize_file(path_, length);
+}
 
 }  // namespace coldspray::io

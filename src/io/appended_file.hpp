@@ -4,17 +4,27 @@
 // is on disk once append() returns.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 
 namespace coldspray::io {
 
+// Create: a new table; Resume: a table a restarted run continues (run/checkpoints.hpp).
+enum class Opening { Create, Resume };
+
 class AppendedFile {
  public:
-  // Creates or empties the file and writes `header`. Throws RunFault if it cannot.
-  AppendedFile(std::filesystem::path path, std::string_view header);
+  // Create: creates or empties the file and writes `header`; Resume: leaves the file as it is.
+  // Throws RunFault if it cannot.
+  AppendedFile(std::filesystem::path path, std::string_view header,
+               Opening opening = Opening::Create);
   // Adds `text` at the end. Throws RunFault if it cannot.
   void append(std::string_view text);
+  // The file's length in bytes, and cutting it back to a length it had (the rows a restarted
+  // run writes again); InputError if it is shorter than that.
+  std::uintmax_t length() const;
+  void cut_to(std::uintmax_t length) const;
 
  private:
   std::filesystem::path path_;

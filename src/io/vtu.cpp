@@ -96,6 +96,29 @@ void VtuPointCloud::write(const std::filesystem::path& path) const {
 
 void PvdCollection::add(double time, const std::string& relative_file) {
   entries_.emplace_back(time, relative_file);
+  write();
+}
+
+std::vector<double> PvdCollection::times() const {
+  std::vector<double> t;
+  for (const auto& entry : entries_) t.push_back(entry.first);
+  return t;
+}
+
+std::vector<std::string> PvdCollection::files() const {
+  std::vector<std::string> f;
+  for (const auto& entry : entries_) f.push_back(entry.second);
+  return f;
+}
+
+void PvdCollection::assign(const std::vector<double>& times,
+                           const std::vector<std::string>& files) {
+  entries_.clear();
+  for (std::size_t k = 0; k < times.size(); ++k) entries_.emplace_back(times[k], files[k]);
+  write();
+}
+
+void PvdCollection::write() const {
   write_atomically(path_, [&](std::ostream& out) {
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
            "  <Collection>\n";

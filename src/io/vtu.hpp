@@ -42,8 +42,14 @@ class PvdCollection {
  public:
   explicit PvdCollection(std::filesystem::path path) : path_(std::move(path)) {}
   void add(double time, const std::string& relative_file);
+  // The entries, as times and file names; setting them rewrites the collection.
+  std::vector<double> times() const;
+  std::vector<std::string> files() const;
+  void assign(const std::vector<double>& times, const std::vector<std::string>& files);
 
  private:
+  void write() const;
+
   std::filesystem::path path_;
   std::vector<std::pair<double, std::string>> entries_;
 };

@@ -84,8 +84,13 @@ void remove_departed_points(State& s) {
     b.end = index_after(b.end, gone);
   }
   s.bond_shadows.remove_points(gone);
+  fit_scratch_to_points(s);
+}
+
+void fit_scratch_to_points(State& s) {
   // Rebuilt every step: only their lengths follow the points.
-  const std::size_t n = P.size();
+  const std::size_t n = s.points.size();
+  for (auto& f : s.external_force) f.resize(n, 0.0);
   with_discretisation(s, [&]<class Shape, bool Axisymmetric>() {
     std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils).resize(n);
   });

@@ -36,4 +36,9 @@ inline constexpr double kDepartedBulkFraction = 0.5;
 // it, when a body's departed mass would exceed kDepartedBulkFraction of its mass.
 void remove_departed_points(State& s);
 
+// Sizes what the step rebuilds for the points (stencils, blocks, external forces) to the
+// points' count: after points left, or when a restarted run reads fewer points than its setup
+// seeded (run/checkpoints.hpp).
+void fit_scratch_to_points(State& s);
+
 }  // namespace coldspray::mpm

@@ -6,8 +6,8 @@
 
 namespace coldspray::run {
 
-ContactHistoryWriter::ContactHistoryWriter(const std::filesystem::path& path)
-    : out_(path, "time,body,other,fx,fy,fz\n") {}
+ContactHistoryWriter::ContactHistoryWriter(const std::filesystem::path& path, io::Opening opening)
+    : out_(path, "time,body,other,fx,fy,fz\n", opening) {}
 
 void ContactHistoryWriter::record(const bodies::Bodies& s) {
   const std::size_t bodies = s.bodies.size();

@@ -11,10 +11,11 @@ namespace coldspray::run {
 
 class ContactHistoryWriter {
  public:
-  explicit ContactHistoryWriter(const std::filesystem::path& path);
+  ContactHistoryWriter(const std::filesystem::path& path, io::Opening opening);
   // Rows `time,body,other,fx,fy,fz`: the force on `body` from `other` over the last step (N),
   // for every pair (body before other in `bodies`) that exchanged momentum in it.
   void record(const bodies::Bodies& s);
+  const io::AppendedFile& file() const { return out_; }
 
  private:
   io::AppendedFile out_;

@@ -20,8 +20,9 @@ std::string header(const bodies::Bodies& s) {
 
 }  // namespace
 
-HistoryWriter::HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path)
-    : out_(path, header(s)) {}
+HistoryWriter::HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path,
+                             io::Opening opening)
+    : out_(path, header(s), opening) {}
 
 void HistoryWriter::record(double time, const metrics::EnergyBudget& e,
                            const std::vector<metrics::BodyMetrics>& bodies) {

@@ -12,9 +12,10 @@ namespace coldspray::run {
 
 class HistoryWriter {
  public:
-  HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path);
+  HistoryWriter(const bodies::Bodies& s, const std::filesystem::path& path, io::Opening opening);
   void record(double time, const metrics::EnergyBudget& e,
               const std::vector<metrics::BodyMetrics>& bodies);
+  const io::AppendedFile& file() const { return out_; }
 
  private:
   io::AppendedFile out_;

@@ -74,7 +74,7 @@ double probe_value(const bodies::Bodies& s, std::size_t p, int field) {
 }
 
 ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const bodies::Bodies& s,
-                         const std::filesystem::path& path) {
+                         const std::filesystem::path& path, io::Opening opening) {
   if (probes.empty()) return;
   std::string header = "time";
   for (const auto& probe : probes) {
@@ -84,7 +84,7 @@ ProbeWriter::ProbeWriter(const std::vector<case_file::Probe>& probes, const bodi
       header += fmt::format(",{}.{}", probe.name, f);
     }
   }
-  out_.emplace(path, header + "\n");
+  out_.emplace(path, header + "\n", opening);
 }
 
 void ProbeWriter::record(const bodies::Bodies& s) {

@@ -19,8 +19,10 @@ class ProbeWriter {
  public:
   // Opens path and writes the header time,NAME.FIELD,...; does nothing if there are no probes.
   ProbeWriter(const std::vector<case_file::Probe>& probes, const bodies::Bodies& s,
-              const std::filesystem::path& path);
+              const std::filesystem::path& path, io::Opening opening);
   void record(const bodies::Bodies& s);
+  // The table, if there are probes.
+  const io::AppendedFile* file() const { return out_ ? &*out_ : nullptr; }
 
  private:
   // The point by its body and its index at t = 0 (Points::id), which points leaving the grid do

@@ -4,12 +4,16 @@
 // family keeps one per member (run/bond_family.hpp).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
+#include "io/appended_file.hpp"
 #include "io/vtu.hpp"
+#include "run/checkpoint_policy.hpp"
 #include "run/contact_history.hpp"
 #include "run/history.hpp"
 #include "run/probes.hpp"
@@ -23,8 +27,10 @@ namespace coldspray::run {
 class Recorder {
  public:
   // Creates the folder and writes case.resolved.yaml and the tables' headers; `s` is the state
-  // at t = 0.
-  Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out);
+  // at t = 0. With io::Opening::Resume, a restarted run's recorder: the folder and its tables
+  // are left as they are for fields() to cut back to its checkpoint.
+  Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out,
+           io::Opening opening = io::Opening::Create);
 
   // At t = 0: the first rows and the first snapshot.
   void start(const bodies::Bodies& s);
@@ -33,6 +39,9 @@ class Recorder {
   // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
   // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
   void after_step(const bodies::Bodies& s, bool last);
+  // The rows at s.time, unless they were written at it: the tables of a run that stops early
+  // end at the time it stopped.
+  void write_last_rows(const bodies::Bodies& s);
   // The verdict's series: whether a sample falls due after the step that ended at s.time under
   // `rule`'s end, and taking it.
   bool sample_due(const bodies::Bodies& s, const StepRule& rule) const {
@@ -50,6 +59,37 @@ class Recorder {
   Summary finish(const bodies::Bodies& s, const std::string& status);
 
   const std::filesystem::path& folder() const { return out_; }
+  // The case as case.resolved.yaml has it (what a checkpoint restarts from).
+  const std::string& resolved_case() const { return resolved_case_; }
+  CheckpointPolicy& checkpoints() { return checkpoints_; }
+
+  // The recorder's progress in a checkpoint (checkpoint/archive.hpp): its schedules, the
+  // verdict's series, the summary's counters, the snapshots listed in snapshots.pvd and the
+  // tables' lengths. Read back, the tables are cut to those lengths and the snapshots written
+  // since (or by an earlier run in the folder) removed: the restarted run writes them again.
+  template <class Archive>
+  void fields(Archive& a) {
+    history_due_.fields(a, "recorder/history_due");
+    snapshot_due_.fields(a, "recorder/snapshot_due");
+    checkpoints_.fields(a);
+    verdict_.fields(a);
+    a("recorder/wall_seconds", summary_.wall_seconds);
+    a("recorder/extensions", summary_.extensions);
+    a("recorder/shared_steps", summary_.shared_steps);
+    std::vector<double> times = pvd_.times();
+    std::string files = join_lines(pvd_.files());
+    a("recorder/snapshots/times", times);
+    a("recorder/snapshots/files", files);
+    std::vector<std::uintmax_t> lengths;
+    for (const io::AppendedFile* t : tables()) lengths.push_back(t->length());
+    a("recorder/table_lengths", lengths);
+    if constexpr (Archive::kReading) {
+      pvd_.assign(times, split_lines(files));
+      remove_unlisted_snapshots();
+      const std::vector<const io::AppendedFile*> t = tables();
+      for (std::size_t k = 0; k < t.size() && k < lengths.size(); ++k) t[k]->cut_to(lengths[k]);
+    }
+  }
 
  private:
   // Rows (always on the last step) and a snapshot (never on it: finish() writes that one).
@@ -58,8 +98,14 @@ class Recorder {
   };
   Due falling_due(const bodies::Bodies& s, bool last) const;
   void snapshot(const bodies::Bodies& s);
+  metrics::EnergyBudget write_rows(const bodies::Bodies& s);
+  std::vector<const io::AppendedFile*> tables() const;
+  void remove_unlisted_snapshots() const;
+  static std::string join_lines(const std::vector<std::string>& lines);
+  static std::vector<std::string> split_lines(const std::string& text);
 
   std::filesystem::path out_;
+  std::string resolved_case_;
   double snapshot_interval_;
   HistoryWriter history_;
   ContactHistoryWriter contact_history_;
@@ -67,7 +113,9 @@ class Recorder {
   io::PvdCollection pvd_;
   Schedule history_due_, snapshot_due_;
   VerdictSeries verdict_;
+  CheckpointPolicy checkpoints_;
   Summary summary_;
+  double last_rows_time_ = -1.0;  // s
 };
 
 // A run whose total energy grows past (1 + this) times its initial total stops as a fault.

@@ -9,6 +9,8 @@
 #include "core/error.hpp"
 #include "mpm/stepper.hpp"
 #include "pd/stepper.hpp"
+#include "run/checkpoints.hpp"
+#include "run/interrupt.hpp"
 
 namespace coldspray::run {
 
@@ -51,6 +53,19 @@ void advance(pd::State& s, const StepRule& rule, ResumeAt) {
   pd::step(s);
 }
 
+// Writes a checkpoint where the run stands; at a fault, one that fails to write must not hide
+// the fault, so it is reported on stderr instead.
+template <class State>
+void checkpoint_now(State& s, Recorder& rec, StepRule& rule, double wall, bool at_fault = false) {
+  try {
+    write_checkpoint(s, rec, rule);
+    rec.checkpoints().done(s.time, wall);
+  } catch (const std::exception& e) {
+    if (!at_fault) throw;
+    std::cerr << fmt::format("warning: no checkpoint at the fault: {}\n", e.what());
+  }
+}
+
 }  // namespace
 
 Summary run_case(const case_file::Case& c, const RunOptions& options) {
@@ -58,7 +73,18 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
   return std::visit(
       [&](auto& s) {
         const auto begin = Clock::now();
+        if (!options.restart_from.empty()) {
+          // The undeformed state sets the rule's fixed dt and the recorder's t = 0 references;
+          // then the checkpoint moves both, and the state, to where it was written.
+          StepRule rule(c, s);
+          Recorder rec(c, s, options.out_dir, io::Opening::Resume);
+          read_checkpoint(options.restart_from, s, rec, rule);
+          rec.checkpoints().enable();
+          return run_to_end(s, rule, rec, options.progress);
+        }
+        if (!options.initial_state.empty()) load_initial_state(options.initial_state, s);
         Recorder rec(c, s, options.out_dir);
+        rec.checkpoints().enable();
         rec.start(s);
         rec.add_wall(std::chrono::duration<double>(Clock::now() - begin).count());
         return run_to_end(s, StepRule(c, s), rec, options.progress);
@@ -86,15 +112,28 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
       const bool last = rule.finished(s);
       rec.after_step(s, last);
       account();
+      if (!last && rec.checkpoints().due(s.time, wall())) checkpoint_now(s, rec, rule, wall());
+      if (const int signal = pending_interrupt()) {
+        // The checkpoint first, so that the tables' lengths it records leave out the rows at
+        // the interruption, which a restarted run does not write.
+        if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall());
+        rec.write_last_rows(s);
+        rec.finish(s, "interrupted");
+        throw Interrupted(signal, fmt::format("interrupted at t = {:.6g} ns, step {}; continue "
+                                              "with: coldspray run --restart {}",
+                                              s.time * 1e9, s.step, rec.folder().string()));
+      }
       progress.report(s, rule.end, wall(), last);
     }
   } catch (const RunFault& fault) {
     account();
+    if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall(), /*at_fault=*/true);
     rec.finish(s, fmt::format("fault: {}", fault.what()));
-    throw RunFault(
-        fmt::format("{} (last snapshot and summary in {})", fault.what(), rec.folder().string()));
+    throw RunFault(fmt::format("{} (last snapshot, checkpoint and summary in {})", fault.what(),
+                               rec.folder().string()));
   }
   account();
+  if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall());
   return rec.finish(s, "ok");
 }
 

@@ -14,12 +14,21 @@ namespace coldspray::run {
 struct RunOptions {
   std::filesystem::path out_dir;  // created if missing
   bool progress = true;           // a progress line on stderr
+  // A checkpoint of this case (run/checkpoints.hpp) to continue from, in out_dir, the run
+  // folder that wrote it; empty: from t = 0.
+  std::filesystem::path restart_from;
+  // A checkpoint whose state (of another case with the same bodies) this case starts from, at
+  // t = 0 (run/checkpoints.hpp, load_initial_state); empty: the case's own initial state.
+  std::filesystem::path initial_state;
 };
 
 // Runs the case and writes its results into options.out_dir: case.resolved.yaml, summary.json,
-// history.csv, probes.csv (with probes), snapshots/*.vtu and snapshots.pvd. Throws InputError
-// before writing anything if the case's geometry is invalid; on a fault during the run, writes
-// a last snapshot and a summary with the fault as status, then throws RunFault.
+// history.csv, contact.csv, probes.csv (with probes), snapshots/*.vtu and snapshots.pvd, and
+// checkpoints/step_*.h5 as output.checkpoint_* asks and at the end. Throws InputError before
+// writing anything if the case's geometry is invalid; on a fault during the run, writes a last
+// snapshot, a checkpoint and a summary with the fault as status, then throws RunFault; on
+// SIGINT or SIGTERM (run/interrupt.hpp), a checkpoint, the last rows and a summary with status
+// "interrupted", then throws Interrupted.
 Summary run_case(const case_file::Case& c, const RunOptions& options);
 
 // Where a run picks up: at the start of a step, or, in MPM, halfway through one, at the contact

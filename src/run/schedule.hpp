@@ -2,6 +2,8 @@
 // (at every step, with interval 0). Times within 1e-9 of an interval count as on it.
 #pragma once
 
+#include <string>
+
 namespace coldspray::run {
 
 class Schedule {
@@ -12,6 +14,11 @@ class Schedule {
   void done(double t) {
     if (interval_ <= 0.0) return;
     while (next_ <= t + 1e-9 * interval_) next_ += interval_;
+  }
+  // Its progress in a checkpoint (checkpoint/archive.hpp).
+  template <class Archive>
+  void fields(Archive& a, const std::string& name) {
+    a(name, next_);
   }
 
  private:

@@ -12,7 +12,7 @@
 namespace coldspray::run {
 
 struct Summary {
-  std::string status = "ok";  // "ok", or "fault: <message>"
+  std::string status = "ok";  // "ok", "fault: <message>" or "interrupted"
   long steps = 0;
   double time = 0.0;          // simulated, s
   double wall_seconds = 0.0;  // of a bond-family member, with the shared steps in full

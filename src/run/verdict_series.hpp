@@ -5,6 +5,7 @@
 // run's current end, and at the end itself; into ring buffers allocated once.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -35,6 +36,20 @@ class VerdictSeries {
   std::vector<std::optional<metrics::Verdict>> verdicts() const;
   // Whether some moving body's verdict, were the run to end now, is undecided.
   bool undecided() const;
+
+  // The series so far, in a checkpoint (checkpoint/archive.hpp).
+  template <class Archive>
+  void fields(Archive& a) {
+    a("verdict/count", count_), a("verdict/next", next_);
+    std::vector<std::array<double, 3>> samples(ring_.size());
+    for (std::size_t k = 0; k < ring_.size(); ++k)
+      samples[k] = {ring_[k].time, ring_[k].separation_velocity, ring_[k].bonded_area};
+    a("verdict/samples", samples);
+    if constexpr (Archive::kReading)
+      for (std::size_t k = 0; k < ring_.size(); ++k)
+        ring_[k] = {samples[k][0], samples[k][1], samples[k][2]};
+    schedule_.fields(a, "verdict/next_sample");
+  }
 
  private:
   metrics::Verdict verdict(std::size_t k) const;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "run/interrupt.hpp"
 #include "run/run.hpp"
 #include "run/summary.hpp"
 #include "studies/task_pool.hpp"
@@ -13,7 +14,11 @@ namespace coldspray::studies {
 
 namespace fs = std::filesystem;
 
-bool case_finished(const fs::path& folder) { return fs::exists(folder / "summary.json"); }
+bool case_finished(const fs::path& folder) {
+  if (!fs::exists(folder / "summary.json")) return false;
+  const nlohmann::json summary = read_summary(folder);
+  return !(summary.is_object() && summary.value("status", "") == "interrupted");
+}
 
 nlohmann::json read_summary(const fs::path& folder) {
   std::ifstream in(folder / "summary.json");
@@ -33,6 +38,7 @@ void record_failure(const fs::path& folder, const std::string& status) {
 }  // namespace
 
 bool run_in_folder(const fs::path& folder, const std::function<case_file::Case()>& load) {
+  if (run::pending_interrupt()) return false;  // the study stops (run_parallel)
   fs::remove_all(folder);
   fs::create_directories(folder);
   try {
@@ -41,6 +47,8 @@ bool run_in_folder(const fs::path& folder, const std::function<case_file::Case()
     options.out_dir = folder;
     options.progress = false;
     run::run_case(c, options);
+  } catch (const run::Interrupted&) {
+    return false;  // its summary says "interrupted": not finished, run again by the next call
   } catch (...) {
     return record_outcome(folder, std::current_exception());
   }
@@ -87,6 +95,10 @@ void run_parallel(std::size_t count, int jobs, int threads_per_job,
   TaskPool pool(std::max(1, std::min<int>(jobs, static_cast<int>(count))), threads_per_job);
   for (std::size_t k = 0; k < count; ++k) pool.submit([&body, k] { body(k); });
   pool.run();
+  if (const int signal = run::pending_interrupt())
+    throw run::Interrupted(signal,
+                           "interrupted: the finished cases are kept; the same command again "
+                           "runs the others");
 }
 
 }  // namespace coldspray::studies

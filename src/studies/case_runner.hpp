@@ -16,7 +16,8 @@
 namespace coldspray::studies {
 
 // A case folder is finished once it holds summary.json (run_case writes it last; a failure is
-// recorded in one too). Unfinished folders are cleared and run again.
+// recorded in one too) whose status is not "interrupted" (run/interrupt.hpp). Unfinished
+// folders are cleared and run again.
 bool case_finished(const std::filesystem::path& folder);
 
 // The folder's summary.json, or a discarded (null) json when it is missing or unreadable.
@@ -43,7 +44,8 @@ std::string csv_field(const std::string& text);
 
 // Calls body(k) for every k in [0, count), on min(jobs, count) threads of this process (this
 // one included), each set to `threads_per_job` OpenMP threads (0: the cores shared among the
-// jobs). `body` must not throw.
+// jobs). `body` must not throw. Throws run::Interrupted once all have returned if SIGINT or
+// SIGTERM came meanwhile (the cases not started then are skipped by run_in_folder).
 void run_parallel(std::size_t count, int jobs, int threads_per_job,
                   const std::function<void(std::size_t)>& body);
 

@@ -24,7 +24,8 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"metrics", {"core", "case", "materials", "geometry", "bodies"}},
     {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies"}},
     {"pd", {"core", "case", "materials", "geometry", "bodies"}},
-    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm", "pd"}},
+    {"checkpoint", {"core", "io", "bodies", "mpm", "pd"}},
+    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm", "pd", "checkpoint"}},
     {"studies", {"core", "case", "io", "run"}},
     {"cli", {"core", "case", "io", "material_test", "mpm", "run", "studies"}},
 };

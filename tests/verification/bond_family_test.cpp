@@ -45,11 +45,13 @@ std::string contents(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Every file under the folder, by path relative to it.
+// Every result file under the folder, by path relative to it: not the checkpoints, which a
+// solo run writes and a family's members do not (docs/reliability.md).
 std::set<std::string> files_under(const fs::path& folder) {
   std::set<std::string> names;
   for (const auto& entry : fs::recursive_directory_iterator(folder))
-    if (entry.is_regular_file()) names.insert(fs::relative(entry.path(), folder).string());
+    if (entry.is_regular_file() && entry.path().parent_path().filename() != "checkpoints")
+      names.insert(fs::relative(entry.path(), folder).string());
   return names;
 }
 

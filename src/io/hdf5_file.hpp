@@ -1,0 +1,70 @@
+// An HDF5 file of named datasets (Debian's libhdf5, C API): one-dimensional arrays of numbers,
+// two-dimensional ones (rows of fixed-size records, such as a 3x3 tensor per point) and
+// strings, each under a path such as "points/velocity_x" (groups created as needed). The
+// checkpoints (checkpoint/checkpoint.hpp) are such files, readable by h5dump and h5py.
+#pragma once
+
+#include <hdf5.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace coldspray::io {
+
+// The HDF5 type of each element type a dataset may hold.
+template <class T>
+hid_t hdf5_type() {
+  if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
+  if constexpr (std::is_same_v<T, std::uint8_t>) return H5T_NATIVE_UINT8;
+  if constexpr (std::is_same_v<T, std::uint16_t>) return H5T_NATIVE_UINT16;
+  if constexpr (std::is_same_v<T, std::uint32_t>) return H5T_NATIVE_UINT32;
+  if constexpr (std::is_same_v<T, std::uint64_t>) return H5T_NATIVE_UINT64;
+  if constexpr (std::is_same_v<T, std::int64_t>) return H5T_NATIVE_INT64;
+  if constexpr (std::is_same_v<T, int>) return H5T_NATIVE_INT;
+}
+
+class Hdf5File {
+ public:
+  enum class Mode { Create, Read };
+  // Create: a new file (an existing one is truncated); Read: an existing one. Throws RunFault
+  // (Create) or InputError (Read) naming the file when HDF5 cannot.
+  Hdf5File(const std::filesystem::path& path, Mode mode);
+  ~Hdf5File();
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+
+  // `rows` x `columns` elements of T from `data`, row after row (columns 1: a 1-D dataset).
+  template <class T>
+  void write(const std::string& name, const T* data, std::size_t rows, std::size_t columns = 1) {
+    write_raw(name, hdf5_type<T>(), data, rows, columns);
+  }
+  // The dataset's elements into `data`, which must hold `rows` x `columns` of them: the dataset
+  // must have exactly that shape (an InputError names the file and the dataset otherwise).
+  template <class T>
+  void read(const std::string& name, T* data, std::size_t rows, std::size_t columns = 1) const {
+    read_raw(name, hdf5_type<T>(), data, rows, columns);
+  }
+  // The number of rows of a dataset.
+  std::size_t rows(const std::string& name) const;
+
+  void write_string(const std::string& name, const std::string& text);
+  std::string read_string(const std::string& name) const;
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  void write_raw(const std::string& name, hid_t type, const void* data, std::size_t rows,
+                 std::size_t columns);
+  void read_raw(const std::string& name, hid_t type, void* data, std::size_t rows,
+                std::size_t columns) const;
+  hid_t open_dataset(const std::string& name) const;
+
+  std::filesystem::path path_;
+  hid_t file_ = -1;
+};
+
+}  // namespace coldspray::io

@@ -1,0 +1,151 @@
+#include "run/checkpoints.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "case/load.hpp"
+#include "checkpoint/archive.hpp"
+#include "checkpoint/fields.hpp"
+#include "core/error.hpp"
+#include "io/hdf5_file.hpp"
+#include "mpm/departures.hpp"
+
+namespace coldspray::run {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Everything a checkpoint holds, in either direction.
+template <class Archive, class State>
+void all_fields(Archive& a, State& s, Recorder& rec, StepRule& rule) {
+  checkpoint::fields(a, s);
+  rec.fields(a);
+  a("rule/end", rule.end);
+  a("rule/extensions_left", rule.extensions_left);
+}
+
+// What a restarted MPM run must size to the checkpoint's points: the step's scratch arrays
+// (points leave the MPM's grid, mpm/departures.hpp). Peridynamics keeps its points.
+void fit_to_points(mpm::State& s) { mpm::fit_scratch_to_points(s); }
+void fit_to_points(pd::State&) {}
+
+std::vector<fs::path> checkpoints_in(const fs::path& folder) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error))
+    if (entry.path().extension() == ".h5" && entry.path().filename().string().starts_with("step_"))
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());  // step_NNNNNNNN: by step
+  return files;
+}
+
+// InputError unless the checkpoint is of `method`'s solver.
+void expect_solver(checkpoint::CheckpointReader& reader, const fs::path& path,
+                   const std::string& method) {
+  std::string saved;
+  reader("solver", saved);
+  if (saved != method)
+    throw InputError(path.string(), "solver",
+                     fmt::format("is a {} checkpoint, not {}", saved, method));
+}
+
+}  // namespace
+
+template <class State>
+fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
+  const fs::path folder = rec.folder() / "checkpoints";
+  fs::create_directories(folder);
+  const fs::path path = folder / fmt::format("step_{:08d}.h5", s.step);
+  const fs::path temporary = path.string() + fmt::format(".tmp{}", ::getpid());
+  try {
+    io::Hdf5File file(temporary, io::Hdf5File::Mode::Create);
+    checkpoint::CheckpointWriter writer(file);
+    int format = kCheckpointFormat;
+    std::string method = s.discretisation.method, text = rec.resolved_case();
+    writer("format", format);
+    writer("solver", method);
+    writer("case", text);
+    all_fields(writer, s, rec, rule);
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+  fs::rename(temporary, path);
+  const std::vector<fs::path> kept = checkpoints_in(folder);
+  const auto keep = static_cast<std::size_t>(rec.checkpoints().keep());
+  for (std::size_t k = 0; k + keep < kept.size(); ++k) fs::remove(kept[k]);
+  return path;
+}
+
+fs::path find_checkpoint(const fs::path& file_or_run) {
+  if (fs::is_regular_file(file_or_run)) return file_or_run;
+  const std::vector<fs::path> files = checkpoints_in(file_or_run / "checkpoints");
+  if (files.empty())
+    throw InputError(file_or_run.string(), "",
+                     "holds no checkpoint (checkpoints/step_*.h5): not a run folder, or a run "
+                     "that wrote none");
+  return files.back();
+}
+
+case_file::Case checkpoint_case(const fs::path& path) {
+  const io::Hdf5File file(path, io::Hdf5File::Mode::Read);
+  checkpoint::CheckpointReader reader(file);
+  int format = 0;
+  reader("format", format);
+  if (format != kCheckpointFormat)
+    throw InputError(path.string(), "format",
+                     fmt::format("is checkpoint format {}; this coldspray reads format {}", format,
+                                 kCheckpointFormat));
+  std::string text;
+  reader("case", text);
+  return case_file::load_case_text(path.string(), text);
+}
+
+template <class State>
+void read_checkpoint(const fs::path& path, State& s, Recorder& rec, StepRule& rule) {
+  const io::Hdf5File file(path, io::Hdf5File::Mode::Read);
+  checkpoint::CheckpointReader reader(file);
+  expect_solver(reader, path, s.discretisation.method);
+  all_fields(reader, s, rec, rule);
+  fit_to_points(s);
+}
+
+template <class State>
+void load_initial_state(const fs::path& path, State& s) {
+  const case_file::Case saved = checkpoint_case(path);
+  const io::Hdf5File file(path, io::Hdf5File::Mode::Read);
+  checkpoint::CheckpointReader reader(file);
+  expect_solver(reader, path, s.discretisation.method);
+  bool compatible = saved.bodies.size() == s.bodies.size();
+  for (std::size_t b = 0; compatible && b < s.bodies.size(); ++b) {
+    // Its points at the checkpoint and those that had left the MPM's grid by then
+    // (mpm/departures.hpp): as many as this case seeds.
+    const std::string at = "bodies/" + std::to_string(b) + "/";
+    std::size_t begin = 0, end = 0, departed = 0;
+    reader(at + "begin", begin), reader(at + "end", end), reader(at + "departed/points", departed);
+    compatible = saved.bodies[b].name == s.bodies[b].name &&
+                 end - begin + departed == s.bodies[b].end - s.bodies[b].begin;
+  }
+  if (!compatible)
+    throw InputError(path.string(), "bodies",
+                     "holds other bodies than this case seeds (their names, order and points, "
+                     "from shape and spacing, must be the checkpoint's)");
+  checkpoint::fields(reader, s);
+  fit_to_points(s);
+  s.time = 0.0;
+  s.step = 0;
+}
+
+template fs::path write_checkpoint(mpm::State&, Recorder&, StepRule&);
+template fs::path write_checkpoint(pd::State&, Recorder&, StepRule&);
+template void read_checkpoint(const fs::path&, mpm::State&, Recorder&, StepRule&);
+template void read_checkpoint(const fs::path&, pd::State&, Recorder&, StepRule&);
+template void load_initial_state(const fs::path&, mpm::State&);
+template void load_initial_state(const fs::path&, pd::State&);
+
+}  // namespace coldspray::run

@@ -1,0 +1,25 @@
+#include "run/interrupt.hpp"
+
+#include <csignal>
+
+namespace coldspray::run {
+
+namespace {
+
+volatile std::sig_atomic_t received = 0;
+
+extern "C" void note_signal(int signal) { received = signal; }
+
+}  // namespace
+
+void catch_interrupts() {
+  struct sigaction action {};
+  action.sa_handler = note_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int pending_interrupt() { return received; }
+
+}  // namespace coldspray::run

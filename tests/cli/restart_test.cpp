@@ -1,0 +1,308 @@
+// Checkpoint and restart (docs/reliability.md): a run continued from a checkpoint writes the same
+// bits as the uninterrupted run (every table, snapshot and summary field but the timing), for the
+// MPM in r-z and in 3D with bonding and points leaving the grid, and for peridynamics with the
+// control along the flow and contact; SIGINT stops a run with a checkpoint and exit 130, and
+// after kill -9 the run continues from its last checkpoint.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "run_command.hpp"
+#include "temp_dir.hpp"
+
+extern char** environ;
+
+namespace coldspray::testing {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kExamples = std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/";
+
+std::string contents(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// summary.json without what depends on the wall clock.
+nlohmann::json untimed_summary(const fs::path& run) {
+  nlohmann::json j = nlohmann::json::parse(contents(run / "summary.json"));
+  for (const char* timing : {"wall_seconds", "particle_steps_per_second"}) j.erase(timing);
+  return j;
+}
+
+// The run's result files, relative to its folder: everything but its checkpoints.
+std::vector<fs::path> result_files(const fs::path& run) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::recursive_directory_iterator(run))
+    if (e.is_regular_file() && e.path().parent_path().filename() != "checkpoints")
+      files.push_back(fs::relative(e.path(), run));
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Every result file of `restarted` equal to `whole`'s, byte for byte (summary.json, timing
+// aside).
+void expect_same_results(const fs::path& whole, const fs::path& restarted) {
+  const std::vector<fs::path> files = result_files(whole);
+  EXPECT_EQ(files, result_files(restarted));
+  for (const fs::path& f : files) {
+    if (f == "summary.json")
+      EXPECT_EQ(untimed_summary(whole), untimed_summary(restarted));
+    else
+      EXPECT_TRUE(contents(whole / f) == contents(restarted / f)) << f;
+  }
+  EXPECT_EQ(untimed_summary(restarted)["status"], "ok");
+}
+
+// The finished checkpoint files (not one being written, step_N.h5.tmpPID).
+std::vector<fs::path> checkpoints(const fs::path& run) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(run / "checkpoints"))
+    if (e.path().extension() == ".h5") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Runs `case_file` with `sets` to its end in `whole`; copies the finished folder and restarts
+// the copy from its first checkpoint (so that its tables and snapshots hold rows and files past
+// the checkpoint, which the restart must cut and write again); compares the two.
+void expect_restart_bit_identical(const std::string& case_file, const std::string& sets) {
+  const fs::path dir = make_temp_dir();
+  const fs::path whole = dir / "whole", copy = dir / "copy";
+  const auto r = run_coldspray("run '" + case_file + "' --quiet --out '" + whole.string() +
+                               "' --set output.checkpoint_keep=10 " + sets);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<fs::path> written = checkpoints(whole);
+  ASSERT_GE(written.size(), 3u) << "a mid-run checkpoint and the last one";
+  fs::copy(whole, copy, fs::copy_options::recursive);
+  const fs::path first = copy / "checkpoints" / written.front().filename();
+  const auto restarted = run_coldspray("run --quiet --restart '" + first.string() + "'");
+  ASSERT_EQ(restarted.status, 0) << restarted.output;
+  expect_same_results(whole, copy);
+}
+
+TEST(Restart, MpmAxisymmetricWithBondingIsBitIdentical) {
+  expect_restart_bit_identical(
+      kExamples + "bonding-impact.yaml",
+      "--set bodies.particle.spacing=0.5um --set bodies.substrate.spacing=0.5um "
+      "--set grid.cell_size=1um --set solver.end_time=6ns --set output.checkpoint_interval=2ns "
+      "--set output.snapshot_interval=1ns");
+}
+
+TEST(Restart, Mpm3dWithBondingAndDeparturesIsBitIdentical) {
+  // The fragment leaves the grid after the first checkpoint: the restart reads fewer points
+  // than its setup seeds.
+  expect_restart_bit_identical(kExamples + "fragment-leaves.yaml",
+                               "--set bonding.model=energy --set output.checkpoint_interval=0.4ns "
+                               "--set output.snapshot_interval=0.3ns");
+}
+
+TEST(Restart, PeridynamicsWithFlowControlAndContactIsBitIdentical) {
+  expect_restart_bit_identical(
+      kExamples + "pd-quarter-impact.yaml",
+      "--set symmetry.x=0um --set symmetry.y=0um --set peridynamics.control_stiffness=flow "
+      "--set solver.end_time=6ns --set output.checkpoint_interval=2ns "
+      "--set output.snapshot_interval=1ns");
+}
+
+TEST(Restart, RefusesOverridesAndMissingCheckpoints) {
+  const fs::path dir = make_temp_dir();
+  const auto empty = run_coldspray("run --restart '" + dir.string() + "'");
+  EXPECT_EQ(empty.status, 2) << empty.output;
+  EXPECT_NE(empty.output.find("holds no checkpoint"), std::string::npos) << empty.output;
+  const auto sets = run_coldspray("run --restart '" + dir.string() + "' --set solver.cfl=0.1");
+  EXPECT_EQ(sets.status, 2) << sets.output;
+  const fs::path not_hdf5 = dir / "step_00000001.h5";
+  std::ofstream(not_hdf5) << "text";
+  const auto garbage = run_coldspray("run --restart '" + not_hdf5.string() + "'");
+  EXPECT_EQ(garbage.status, 2) << garbage.output;
+  EXPECT_NE(garbage.output.find("not a readable HDF5 file"), std::string::npos) << garbage.output;
+}
+
+// The last line of a table.
+std::string last_row(const fs::path& table) {
+  std::istringstream in(contents(table));
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+// The row's fields after its first (the time).
+std::string after_time(const std::string& row) { return row.substr(row.find(',')); }
+
+TEST(Restart, AnotherCaseStartsFromACheckpointsState) {
+  // A run of 2 ns more from the impact's last checkpoint: its first history row (t = 0) holds
+  // the impact's last state, every energy and body column to the digit.
+  const fs::path dir = make_temp_dir();
+  const std::string coarse =
+      " --set bodies.particle.spacing=0.5um --set bodies.substrate.spacing=0.5um "
+      "--set grid.cell_size=1um";
+  const auto impact =
+      run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
+                    (dir / "impact").string() + "' --set solver.end_time=6ns" + coarse);
+  ASSERT_EQ(impact.status, 0) << impact.output;
+  const fs::path last = checkpoints(dir / "impact").back();
+  const auto after = run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
+                                   (dir / "after").string() + "' --initial-state '" +
+                                   last.string() + "' --set solver.end_time=2ns" + coarse);
+  ASSERT_EQ(after.status, 0) << after.output;
+  std::istringstream history(contents(dir / "after" / "history.csv"));
+  std::string header, first;
+  std::getline(history, header);
+  std::getline(history, first);
+  EXPECT_EQ(first.substr(0, first.find(',')), "0");
+  EXPECT_EQ(after_time(first), after_time(last_row(dir / "impact" / "history.csv")));
+
+  // Other bodies than the checkpoint's: refused, naming the checkpoint.
+  const auto finer = run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
+                                   (dir / "finer").string() + "' --initial-state '" +
+                                   last.string() + "' --set grid.cell_size=1um");
+  EXPECT_EQ(finer.status, 2) << finer.output;
+  EXPECT_NE(finer.output.find("holds other bodies than this case seeds"), std::string::npos)
+      << finer.output;
+  EXPECT_FALSE(fs::exists(dir / "finer"));
+}
+
+// Starts `coldspray ARGS...` in the background; returns its pid.
+pid_t spawn_coldspray(std::vector<std::string> args) {
+  args.insert(args.begin(), COLDSPRAY_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  EXPECT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+  return pid;
+}
+
+// Waits until `run` holds a checkpoint (or `pid` ended); returns whether one appeared.
+bool wait_for_checkpoint(const fs::path& run, pid_t pid) {
+  for (int k = 0; k < 6000; ++k) {
+    if (fs::exists(run / "checkpoints") && !checkpoints(run).empty()) return true;
+    if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+int exit_status(pid_t pid) {
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
+}
+
+// The peridynamics impact to 25 ns with a checkpoint every 1 ns of simulated time: long enough
+// (several seconds) for a signal to land mid-run.
+const std::vector<std::string> kLongRunSets = {"--set", "symmetry.x=0um",
+                                               "--set", "symmetry.y=0um",
+                                               "--set", "output.checkpoint_interval=1ns",
+                                               "--set", "output.snapshot_interval=5ns"};
+
+std::vector<std::string> long_run_args(const fs::path& out) {
+  std::vector<std::string> args = {"run", kExamples + "pd-quarter-impact.yaml", "--quiet", "--out",
+                                   out.string()};
+  args.insert(args.end(), kLongRunSets.begin(), kLongRunSets.end());
+  return args;
+}
+
+// Runs the long case to its end in `whole`.
+void run_whole_long_case(const fs::path& whole) {
+  std::string args =
+      "run '" + kExamples + "pd-quarter-impact.yaml' --quiet --out '" + whole.string() + "'";
+  for (std::size_t k = 0; k < kLongRunSets.size(); k += 2) args += " --set " + kLongRunSets[k + 1];
+  const auto r = run_coldspray(args);
+  ASSERT_EQ(r.status, 0) << r.output;
+}
+
+// Runs the long case whole, and again stopped by `signal` once its first checkpoint exists;
+// returns the stopped run's folder, after checking its exit status.
+struct StoppedRun {
+  fs::path whole, stopped;
+};
+StoppedRun stop_long_run(int signal, int expected_status) {
+  const fs::path dir = make_temp_dir();
+  const StoppedRun run{dir / "whole", dir / "stopped"};
+  run_whole_long_case(run.whole);
+  const pid_t pid = spawn_coldspray(long_run_args(run.stopped));
+  EXPECT_TRUE(wait_for_checkpoint(run.stopped, pid));
+  kill(pid, signal);
+  EXPECT_EQ(exit_status(pid), expected_status);
+  return run;
+}
+
+void expect_restart_finishes(const StoppedRun& run) {
+  const auto r = run_coldspray("run --quiet --restart '" + run.stopped.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  expect_same_results(run.whole, run.stopped);
+}
+
+TEST(Restart, SigintStopsWithACheckpointAndTheRestartFinishesTheRun) {
+  const StoppedRun run = stop_long_run(SIGINT, 130);
+  EXPECT_EQ(untimed_summary(run.stopped)["status"], "interrupted");
+  expect_restart_finishes(run);
+}
+
+TEST(Restart, SigtermStopsTheSameWayWithStatus143) {
+  const StoppedRun run = stop_long_run(SIGTERM, 143);
+  EXPECT_EQ(untimed_summary(run.stopped)["status"], "interrupted");
+  expect_restart_finishes(run);
+}
+
+TEST(Restart, AfterKill9TheRunContinuesFromItsLastCheckpoint) {
+  const StoppedRun run = stop_long_run(SIGKILL, -SIGKILL);
+  EXPECT_FALSE(fs::exists(run.stopped / "summary.json"));
+  expect_restart_finishes(run);
+}
+
+TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
+  const fs::path dir = make_temp_dir();
+  const fs::path sweep = dir / "sweep";
+  std::vector<std::string> args = {"sweep",  kExamples + "pd-quarter-impact.yaml",
+                                   "--vary", "solver.end_time=20ns,21ns,22ns",
+                                   "--jobs", "1",
+                                   "--out",  sweep.string()};
+  args.insert(args.end(), kLongRunSets.begin(), kLongRunSets.end());
+  const pid_t pid = spawn_coldspray(args);
+  fs::path first;
+  for (int k = 0; k < 6000 && first.empty(); ++k) {
+    if (fs::exists(sweep))
+      for (const auto& e : fs::directory_iterator(sweep))
+        if (e.is_directory() && fs::exists(e.path() / "checkpoints") &&
+            !checkpoints(e.path()).empty())
+          first = e.path();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_FALSE(first.empty()) << "no case wrote a checkpoint";
+  kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), 130);
+  EXPECT_EQ(untimed_summary(first)["status"], "interrupted");
+  std::string again = "sweep '" + kExamples +
+                      "pd-quarter-impact.yaml' --vary solver.end_time=20ns,21ns,22ns --jobs 1 "
+                      "--out '" +
+                      sweep.string() + "'";
+  for (std::size_t k = 0; k < kLongRunSets.size(); k += 2) again += " --set " + kLongRunSets[k + 1];
+  const auto r = run_coldspray(again);
+  ASSERT_EQ(r.status, 0) << r.output;
+  int cases = 0;
+  for (const auto& e : fs::directory_iterator(sweep))
+    if (e.is_directory()) {
+      EXPECT_EQ(untimed_summary(e.path())["status"], "ok") << e.path();
+      ++cases;
+    }
+  EXPECT_EQ(cases, 3);
+}
+
+}  // namespace
+}  // namespace coldspray::testing
