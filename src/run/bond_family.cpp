@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "mpm/setup.hpp"
 #include "mpm/stepper.hpp"
+#include "run/interrupt.hpp"
 #include "run/recorder.hpp"
 #include "run/run.hpp"
 #include "run/step_rule.hpp"
@@ -73,6 +74,10 @@ class Trunk {
       for (std::size_t k = 0; k < shadows_.size(); ++k) {
         recorders_[shadows_.id(k)]->add_wall(wall);
         recorders_[shadows_.id(k)]->add_shared_step();
+      }
+      if (const int signal = pending_interrupt()) {
+        for (std::size_t k = shadows_.size(); k-- > 0;) interrupt_member(k, signal);
+        return;
       }
     }
     for (std::size_t k = shadows_.size(); k-- > 0;) end_member(k, nullptr);
@@ -202,14 +207,31 @@ class Trunk {
   // Shadow k's member ends on the trunk: at the end (`fault` null) or with the fault, as
   // run_to_end ends a run: the last snapshot and the summary, then the RunFault.
   void end_member(std::size_t k, const RunFault* fault) {
+    if (!fault) return finish_member(k, "ok", nullptr, /*last_rows=*/false);
+    const std::string folder = members_[shadows_.id(k)].out_dir.string();
+    finish_member(k, fmt::format("fault: {}", fault->what()),
+                  std::make_exception_ptr(RunFault(
+                      fmt::format("{} (last snapshot and summary in {})", fault->what(), folder))),
+                  /*last_rows=*/false);
+  }
+
+  // Shadow k's member stops on SIGINT or SIGTERM, as run_to_end stops a run (but without a
+  // checkpoint: a family's members write none): its last rows, snapshot and summary, then
+  // Interrupted.
+  void interrupt_member(std::size_t k, int signal) {
+    finish_member(k, "interrupted", std::make_exception_ptr(Interrupted(signal, "interrupted")),
+                  /*last_rows=*/true);
+  }
+
+  // Shadow k's member writes its last snapshot and its summary with `status` and leaves with
+  // `failure` (null: none), or with the failure to write them.
+  void finish_member(std::size_t k, const std::string& status, std::exception_ptr failure,
+                     bool last_rows) {
     const std::size_t i = shadows_.id(k);
-    std::exception_ptr failure;
     try {
       shadows_.write_bond(k, state_.points);
-      recorders_[i]->finish(state_, fault ? fmt::format("fault: {}", fault->what()) : "ok");
-      if (fault)
-        throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault->what(),
-                                   members_[i].out_dir.string()));
+      if (last_rows) recorders_[i]->write_last_rows(state_);
+      recorders_[i]->finish(state_, status);
     } catch (...) {
       failure = std::current_exception();
     }

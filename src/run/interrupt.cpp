@@ -15,6 +15,9 @@ extern "C" void note_signal(int signal) { received = signal; }
 void catch_interrupts() {
   struct sigaction action {};
   action.sa_handler = note_signal;
+  // A second signal ends the program at once: the way out of a set-up or a checkpoint that
+  // takes too long.
+  action.sa_flags = SA_RESETHAND;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);

@@ -162,6 +162,7 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
       }
     });
   pool.run();
+  throw_if_interrupted();
   counts.ran = done;
   counts.failed = failed;
   return counts;

@@ -47,8 +47,6 @@ bool run_in_folder(const fs::path& folder, const std::function<case_file::Case()
     options.out_dir = folder;
     options.progress = false;
     run::run_case(c, options);
-  } catch (const run::Interrupted&) {
-    return false;  // its summary says "interrupted": not finished, run again by the next call
   } catch (...) {
     return record_outcome(folder, std::current_exception());
   }
@@ -59,6 +57,8 @@ bool record_outcome(const fs::path& folder, const std::exception_ptr& failure) {
   if (!failure) return true;
   try {
     std::rethrow_exception(failure);
+  } catch (const run::Interrupted&) {
+    // Its summary, if it wrote one, says "interrupted": not finished, run again next time.
   } catch (const InputError& e) {
     record_failure(folder, std::string("input error: ") + e.what());
   } catch (const RunFault& e) {
@@ -95,6 +95,10 @@ void run_parallel(std::size_t count, int jobs, int threads_per_job,
   TaskPool pool(std::max(1, std::min<int>(jobs, static_cast<int>(count))), threads_per_job);
   for (std::size_t k = 0; k < count; ++k) pool.submit([&body, k] { body(k); });
   pool.run();
+  throw_if_interrupted();
+}
+
+void throw_if_interrupted() {
   if (const int signal = run::pending_interrupt())
     throw run::Interrupted(signal,
                            "interrupted: the finished cases are kept; the same command again "

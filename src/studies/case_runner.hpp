@@ -31,7 +31,8 @@ bool run_in_folder(const std::filesystem::path& folder,
 
 // How a case in `folder` ended: true for no failure; otherwise an InputError, RunFault or other
 // exception is recorded as the summary's status ("input error: ...", "fault: ...", "error: ...",
-// keeping the summary a RunFault's run has written) and false returned.
+// keeping the summary a RunFault's run has written) and false returned. A run::Interrupted case
+// is left unfinished (false, nothing recorded).
 bool record_outcome(const std::filesystem::path& folder, const std::exception_ptr& failure);
 
 // The indices of `folders` that this rank runs (i % ranks == rank) and that are not finished;
@@ -48,5 +49,8 @@ std::string csv_field(const std::string& text);
 // SIGTERM came meanwhile (the cases not started then are skipped by run_in_folder).
 void run_parallel(std::size_t count, int jobs, int threads_per_job,
                   const std::function<void(std::size_t)>& body);
+
+// After a study's cases: throws run::Interrupted if SIGINT or SIGTERM came meanwhile.
+void throw_if_interrupted();
 
 }  // namespace coldspray::studies

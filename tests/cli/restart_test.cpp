@@ -308,5 +308,56 @@ TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
   EXPECT_EQ(cases, 3);
 }
 
+TEST(Restart, ASecondSigintEndsTheProgramAtOnce) {
+  // Both signals land in the set-up of the PD paper's impact at D/25 (seconds of building
+  // families): the first asks for a stop after the step, the second ends the program.
+  const fs::path out = fs::path(make_temp_dir()) / "impact";
+  const pid_t pid =
+      spawn_coldspray({"impact", "--solver", "peridynamics", "--diameter", "30um", "--velocity",
+                       "500m/s", "--spacing", "1.2um", "--quiet", "--out", out.string()});
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, SIGINT);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), -SIGINT);
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+TEST(Restart, SigintStopsACalibrationWhichTheSameCommandFinishes) {
+  // The tiny calibration of the studies' tests, run to 60 ns so that the signal lands while its
+  // bond families run.
+  const fs::path dir = make_temp_dir();
+  std::string text = contents(std::string(COLDSPRAY_TEST_DATA) + "/cli/calibrate-tiny.yaml");
+  text.replace(text.find("end_time: 3 ns"), 14, "end_time: 60 ns");
+  std::ofstream(dir / "calib.yaml") << text;
+  const std::vector<std::string> args = {"calibrate", (dir / "calib.yaml").string(),
+                                         "--out",     (dir / "cal").string(),
+                                         "--quiet",   "--jobs",
+                                         "2",         "--threads-per-job",
+                                         "1"};
+  const pid_t pid = spawn_coldspray(args);
+  bool running = false;
+  for (int k = 0; k < 6000 && !running; ++k) {
+    if (fs::exists(dir / "cal"))
+      for (const auto& e : fs::recursive_directory_iterator(dir / "cal"))
+        running = running || e.path().filename() == "history.csv";
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_TRUE(running);
+  kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), 130);
+  int interrupted = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "cal"))
+    if (e.path().filename() == "summary.json")
+      interrupted += untimed_summary(e.path().parent_path())["status"] == "interrupted";
+  EXPECT_GT(interrupted, 0);
+  std::string again;
+  for (std::size_t k = 0; k < args.size(); ++k) again += " '" + args[k] + "'";
+  const auto r = run_coldspray(again);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("(0 failed)"), std::string::npos) << r.output;
+  EXPECT_EQ(contents(dir / "cal" / "runs.csv").find("interrupted"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace coldspray::testing
