@@ -206,10 +206,8 @@ class Trunk {
     std::exception_ptr failure;
     try {
       shadows_.write_bond(k, state_.points);
-      recorders_[i]->finish(state_, fault ? fmt::format("fault: {}", fault->what()) : "ok");
-      if (fault)
-        throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault->what(),
-                                   members_[i].out_dir.string()));
+      if (fault) recorders_[i]->end_with_fault(state_, *fault);
+      recorders_[i]->finish(state_, "ok");
     } catch (...) {
       failure = std::current_exception();
     }

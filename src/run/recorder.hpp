@@ -9,8 +9,10 @@
 
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
+#include "core/error.hpp"
 #include "io/vtu.hpp"
 #include "run/contact_history.hpp"
+#include "run/fault_checks.hpp"
 #include "run/history.hpp"
 #include "run/probes.hpp"
 #include "run/schedule.hpp"
@@ -28,10 +30,11 @@ class Recorder {
 
   // At t = 0: the first rows and the first snapshot.
   void start(const bodies::Bodies& s);
-  // Whether rows or a snapshot fall due after the step that ended at s.time.
+  // Whether the fault checks, rows or a snapshot fall due after the step that ended at s.time.
   bool due(const bodies::Bodies& s, bool last) const;
-  // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
-  // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
+  // After a step: the fault checks (run/fault_checks.hpp, every kFaultCheckStride steps and on
+  // the `last`), which throw RunFault, then the rows and the snapshot due (rows always on the
+  // `last` step; its snapshot is finish()'s).
   void after_step(const bodies::Bodies& s, bool last);
   // The verdict's series: whether a sample falls due after the step that ended at s.time under
   // `rule`'s end, and taking it.
@@ -48,15 +51,20 @@ class Recorder {
   void add_shared_step() { ++summary_.shared_steps; }
   // The last snapshot, and summary.json with `status` ("ok" or "fault: ...").
   Summary finish(const bodies::Bodies& s, const std::string& status);
+  // The fault path, wherever a run stops on `fault` (run_to_end, a bond family's trunk): the
+  // rows at the fault time if the tables do not end there yet, the last snapshot and the summary
+  // with the fault as status; then throws the RunFault naming the folder.
+  [[noreturn]] void end_with_fault(const bodies::Bodies& s, const RunFault& fault);
 
   const std::filesystem::path& folder() const { return out_; }
 
  private:
   // Rows (always on the last step) and a snapshot (never on it: finish() writes that one).
   struct Due {
-    bool rows, snapshot;
+    bool checks, rows, snapshot;
   };
   Due falling_due(const bodies::Bodies& s, bool last) const;
+  void rows(const bodies::Bodies& s, const metrics::EnergyBudget& e);
   void snapshot(const bodies::Bodies& s);
 
   std::filesystem::path out_;
@@ -68,9 +76,8 @@ class Recorder {
   Schedule history_due_, snapshot_due_;
   VerdictSeries verdict_;
   Summary summary_;
+  FaultChecks checks_;
+  double last_row_time_ = -1.0;  // s; before t = 0 until the first rows
 };
-
-// A run whose total energy grows past (1 + this) times its initial total stops as a fault.
-inline constexpr double kEnergyGrowthLimit = 0.2;
 
 }  // namespace coldspray::run

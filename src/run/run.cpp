@@ -90,9 +90,7 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
     }
   } catch (const RunFault& fault) {
     account();
-    rec.finish(s, fmt::format("fault: {}", fault.what()));
-    throw RunFault(
-        fmt::format("{} (last snapshot and summary in {})", fault.what(), rec.folder().string()));
+    rec.end_with_fault(s, fault);
   }
   account();
   return rec.finish(s, "ok");
