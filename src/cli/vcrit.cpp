@@ -16,6 +16,7 @@
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
+#include "io/output_folder.hpp"
 #include "studies/critical_velocity.hpp"
 #include "studies/mpi_session.hpp"
 
@@ -100,6 +101,7 @@ void add_vcrit(CLI::App& app) {
     o.threads_per_job = opt->threads_per_job;
     o.progress = !opt->quiet;
     o.out_dir = opt->out_dir.empty() ? "out/vcrit-" + opt->impact.material : opt->out_dir;
+    io::make_output_folder(o.out_dir);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->sets);
     const std::string command =
         command_line("coldspray impact", *sub,

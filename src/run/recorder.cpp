@@ -8,6 +8,7 @@
 #include "io/atomic_file.hpp"
 #include "metrics/body_metrics.hpp"
 #include "metrics/energy.hpp"
+#include "run/run_folder.hpp"
 #include "run/snapshot.hpp"
 
 namespace coldspray::run {
@@ -15,7 +16,7 @@ namespace coldspray::run {
 namespace {
 
 std::filesystem::path prepared(std::filesystem::path out, const case_file::Case& c) {
-  std::filesystem::create_directories(out / "snapshots");
+  prepare_run_folder(out);
   io::write_atomically(out / "case.resolved.yaml",
                        [&](std::ostream& os) { case_file::write_resolved(c, os); });
   return out;

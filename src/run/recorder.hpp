@@ -24,8 +24,9 @@ namespace coldspray::run {
 
 class Recorder {
  public:
-  // Creates the folder and writes case.resolved.yaml and the tables' headers; `s` is the state
-  // at t = 0.
+  // Creates the folder (InputError if it is a file, under one, or unwritable), removes a
+  // previous run's results from it (run/run_folder.hpp) and writes case.resolved.yaml and the
+  // tables' headers; `s` is the state at t = 0.
   Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out);
 
   // At t = 0: the first rows and the first snapshot.
