@@ -7,7 +7,6 @@
 
 #include "cli/calibration_file.hpp"
 #include "cli/commands.hpp"
-#include "io/output_folder.hpp"
 #include "studies/calibration.hpp"
 #include "studies/mpi_session.hpp"
 
@@ -87,7 +86,6 @@ void add_calibrate(CLI::App& app) {
     const studies::MpiSession mpi;
     studies::CalibrationRunOptions o;
     o.out_dir = opt->out_dir.empty() ? "out/" + file.name : opt->out_dir;
-    io::make_output_folder(o.out_dir);
     o.jobs = opt->jobs;
     o.threads_per_job = opt->threads_per_job;
     o.progress = !opt->quiet;

@@ -9,7 +9,6 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
-#include "io/output_folder.hpp"
 #include "studies/mpi_session.hpp"
 
 namespace coldspray::cli {
@@ -46,7 +45,6 @@ void add_sweep(CLI::App& app) {
     const studies::MpiSession mpi;
     studies::SweepOptions options;
     options.out_dir = opt->out_dir.empty() ? "out/" + c.name + "-sweep" : opt->out_dir;
-    io::make_output_folder(options.out_dir);
     options.jobs = opt->jobs;
     options.threads_per_job = opt->threads_per_job;
     options.progress = !opt->quiet;

@@ -101,7 +101,6 @@ void add_vcrit(CLI::App& app) {
     o.threads_per_job = opt->threads_per_job;
     o.progress = !opt->quiet;
     o.out_dir = opt->out_dir.empty() ? "out/vcrit-" + opt->impact.material : opt->out_dir;
-    io::make_output_folder(o.out_dir);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->sets);
     const std::string command =
         command_line("coldspray impact", *sub,
@@ -112,6 +111,7 @@ void add_vcrit(CLI::App& app) {
       return case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
     };
 
+    io::make_output_folder(o.out_dir);
     const studies::MpiSession mpi;
     o.rank = mpi.rank();
     o.ranks = mpi.size();
