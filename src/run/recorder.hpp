@@ -60,7 +60,8 @@ class Recorder {
   const std::filesystem::path& folder() const { return out_; }
 
  private:
-  // Rows (always on the last step) and a snapshot (never on it: finish() writes that one).
+  // The fault checks (every kFaultCheckStride steps and on the last), rows (always on the last
+  // step) and a snapshot (never on it: finish() writes that one).
   struct Due {
     bool checks, rows, snapshot;
   };
