@@ -9,4 +9,4 @@ bin=build/release/coldspray
 
 echo
 echo "== The default case: a 14 um Al particle at 810 m/s on an Al substrate =="
-"$bin" run examples/al-14um-810.yaml
+"$bin" run examples/al-14um-810.yaml --overwrite  # the script may be run again

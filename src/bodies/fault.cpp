@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bodies/bodies.hpp"
+#include "bodies/describe_point.hpp"
 #include "core/error.hpp"
 
 namespace coldspray::bodies {
@@ -17,13 +18,7 @@ void record_fault(Fault& fault, std::size_t p, const char* cause) {
 
 void raise_recorded_fault(const Bodies& s) {
   if (s.fault.point == std::numeric_limits<std::size_t>::max()) return;
-  const std::size_t p = s.fault.point;
-  const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),
-                                 [p](const BodyRange& b) { return p >= b.begin && p < b.end; });
-  throw RunFault(fmt::format(
-      "body '{}', point {} at ({:.4g}, {:.4g}, {:.4g}) um, t = {:.6g} ns: {}", body->name,
-      s.points.id[p], s.points.position[0][p] * 1e6, s.points.position[1][p] * 1e6,
-      s.points.position[2][p] * 1e6, s.time * 1e9, s.fault.cause));
+  throw RunFault(fmt::format("{}: {}", describe_point(s, s.fault.point), s.fault.cause));
 }
 
 }  // namespace coldspray::bodies

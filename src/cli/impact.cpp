@@ -35,9 +35,9 @@ struct Options {
 };
 
 ImpactSpec make_spec(const Options& o, const CLI::App& sub) {
-  return impact_spec(o.impact, parse_diameter("--diameter", o.diameter),
-                     parse_speed("--velocity", o.velocity),
-                     command_line(kSource, sub, {"--write-case", "--out", "--threads", "--quiet"}));
+  return impact_spec(
+      o.impact, parse_diameter("--diameter", o.diameter), parse_speed("--velocity", o.velocity),
+      command_line(kSource, sub, {"--write-case", "--out", "--overwrite", "--threads", "--quiet"}));
 }
 
 // The case file to write: the generated text, or with --set its tree after the overrides
@@ -56,10 +56,7 @@ std::string case_file_text(const GeneratedCase& g,
 }
 
 void write_case(const std::string& path, const std::string& text) {
-  const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    throw InputError("--write-case", "", "no such folder '" + folder.string() + "'");
+  io::require_replaceable(path, "--write-case");
   io::write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 

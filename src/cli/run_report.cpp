@@ -6,12 +6,16 @@
 #include <ostream>
 
 #include "cli/case_summary.hpp"
+#include "core/error.hpp"
 #include "run/run.hpp"
+#include "run/run_folder.hpp"
 
 namespace coldspray::cli {
 
 void add_run_flags(CLI::App& sub, RunFlags& flags) {
   sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)");
+  sub.add_flag("--overwrite", flags.overwrite,
+               "Replace the results of a previous run in the output folder");
   sub.add_option("--set", flags.sets, "Override a key: KEY=VALUE (repeatable)");
   sub.add_option("--threads", flags.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
@@ -32,6 +36,13 @@ Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostr
   options.progress = !flags.quiet;
   options.restart_from = flags.restart_from;
   options.initial_state = flags.initial_state;
+  // (A restarted run continues its own folder's results.)
+  if (const auto previous = run::previous_run_result(options.out_dir);
+      previous && !flags.overwrite && flags.restart_from.empty())
+    throw InputError("--out", "",
+                     fmt::format("'{}' holds a previous run's results ({}); pass --overwrite to "
+                                 "replace them, or choose another folder",
+                                 options.out_dir.string(), previous->string()));
   const run::Summary s = run::run_case(c, options);
   out << fmt::format(
       "done: {} steps to t = {:.4g} ns in {:.1f} s on {} threads ({:.3g} particle-steps/s)\n"

@@ -23,9 +23,11 @@ struct RunFlags {
   std::filesystem::path restart_from;
   // `run --initial-state`: a checkpoint whose state the case starts from.
   std::filesystem::path initial_state;
+  bool overwrite = false;  // run into a folder that holds a previous run's results
 };
 
-// --out, --set, --threads and --quiet on a subcommand; `flags` must outlive the parse.
+// --out, --overwrite, --set, --threads and --quiet on a subcommand; `flags` must outlive the
+// parse.
 void add_run_flags(CLI::App& sub, RunFlags& flags);
 
 // The --set texts as overrides; InputError for one that is not KEY=VALUE.
@@ -37,7 +39,8 @@ struct Report {
 };
 
 // Prints the case, runs it into flags.out_dir (or out/NAME) and prints the steps, the energy
-// budget and each body's motion; RunFault and InputError pass through.
+// budget and each body's motion; RunFault and InputError pass through. A folder that holds a
+// previous run's results is InputError unless flags.overwrite (then the run replaces them).
 Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostream& out);
 
 // "results in DIR/ (...)": the last line of `run` and `impact`.

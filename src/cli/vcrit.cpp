@@ -16,6 +16,7 @@
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
+#include "io/output_folder.hpp"
 #include "studies/critical_velocity.hpp"
 #include "studies/mpi_session.hpp"
 
@@ -110,6 +111,7 @@ void add_vcrit(CLI::App& app) {
       return case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
     };
 
+    io::make_output_folder(o.out_dir);
     const studies::MpiSession mpi;
     o.rank = mpi.rank();
     o.ranks = mpi.size();

@@ -5,12 +5,20 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <string>
 
 namespace coldspray::io {
 
+// Checks that `path` can be written atomically: its folder exists, and `path` is missing or a
+// regular file. The rename would put a regular file in place of whatever else is there: a
+// symbolic link (not the file it points to), a fifo, or a device (as root, /dev/full). Throws
+// InputError naming `where` (an option, or empty) and the path if not.
+void require_replaceable(const std::filesystem::path& path, const std::string& where = "");
+
 // Calls `write` with a stream to a temporary file in the target's folder, then renames it to
-// `path`. If `write` throws or the stream fails, the temporary file is removed, `path` is left
-// as it was, and the exception (or a RunFault for a failed stream) propagates.
+// `path`. First require_replaceable(path) (InputError); if `write` throws or the stream fails,
+// the temporary file is removed, `path` is left as it was, and the exception (or a RunFault for a
+// failed stream) propagates.
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write);
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -207,31 +208,27 @@ class Trunk {
   // Shadow k's member ends on the trunk: at the end (`fault` null) or with the fault, as
   // run_to_end ends a run: the last snapshot and the summary, then the RunFault.
   void end_member(std::size_t k, const RunFault* fault) {
-    if (!fault) return finish_member(k, "ok", nullptr, /*last_rows=*/false);
-    const std::string folder = members_[shadows_.id(k)].out_dir.string();
-    finish_member(k, fmt::format("fault: {}", fault->what()),
-                  std::make_exception_ptr(RunFault(
-                      fmt::format("{} (last snapshot and summary in {})", fault->what(), folder))),
-                  /*last_rows=*/false);
+    finish_member(k, [&](Recorder& rec) {
+      if (fault) rec.end_with_fault(state_, *fault);
+      rec.finish(state_, "ok");
+    });
   }
 
   // Shadow k's member stops on SIGINT or SIGTERM, as run_to_end stops a run (but without a
   // checkpoint: a family's members write none): its last rows, snapshot and summary, then
   // Interrupted.
   void interrupt_member(std::size_t k, int signal) {
-    finish_member(k, "interrupted", std::make_exception_ptr(Interrupted(signal, "interrupted")),
-                  /*last_rows=*/true);
+    finish_member(k, [&](Recorder& rec) { rec.end_interrupted(state_, signal); });
   }
 
-  // Shadow k's member writes its last snapshot and its summary with `status` and leaves with
-  // `failure` (null: none), or with the failure to write them.
-  void finish_member(std::size_t k, const std::string& status, std::exception_ptr failure,
-                     bool last_rows) {
+  // Shadow k's member ends with its own D_bond by `end` (of its recorder) and leaves with what
+  // that throws, if anything.
+  void finish_member(std::size_t k, const std::function<void(Recorder&)>& end) {
     const std::size_t i = shadows_.id(k);
+    std::exception_ptr failure;
     try {
       shadows_.write_bond(k, state_.points);
-      if (last_rows) recorders_[i]->write_last_rows(state_);
-      recorders_[i]->finish(state_, status);
+      end(*recorders_[i]);
     } catch (...) {
       failure = std::current_exception();
     }

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "io/hdf5_file.hpp"
 #include "mpm/departures.hpp"
+#include "run/run_folder.hpp"
 
 namespace coldspray::run {
 
@@ -32,16 +33,6 @@ void all_fields(Archive& a, State& s, Recorder& rec, StepRule& rule) {
 // (points leave the MPM's grid, mpm/departures.hpp). Peridynamics keeps its points.
 void fit_to_points(mpm::State& s) { mpm::fit_scratch_to_points(s); }
 void fit_to_points(pd::State&) {}
-
-std::vector<fs::path> checkpoints_in(const fs::path& folder) {
-  std::vector<fs::path> files;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(folder, error))
-    if (entry.path().extension() == ".h5" && entry.path().filename().string().starts_with("step_"))
-      files.push_back(entry.path());
-  std::sort(files.begin(), files.end());  // step_NNNNNNNN: by step
-  return files;
-}
 
 // InputError unless the checkpoint is of `method`'s solver.
 void expect_solver(checkpoint::CheckpointReader& reader, const fs::path& path,
@@ -76,7 +67,7 @@ fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
     throw;
   }
   fs::rename(temporary, path);
-  const std::vector<fs::path> kept = checkpoints_in(folder);
+  const std::vector<fs::path> kept = step_files(folder, ".h5");
   const auto keep = static_cast<std::size_t>(rec.checkpoints().keep());
   for (std::size_t k = 0; k + keep < kept.size(); ++k) fs::remove(kept[k]);
   return path;
@@ -84,7 +75,7 @@ fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
 
 fs::path find_checkpoint(const fs::path& file_or_run) {
   if (fs::is_regular_file(file_or_run)) return file_or_run;
-  const std::vector<fs::path> files = checkpoints_in(file_or_run / "checkpoints");
+  const std::vector<fs::path> files = step_files(file_or_run / "checkpoints", ".h5");
   if (files.empty())
     throw InputError(file_or_run.string(), "",
                      "holds no checkpoint (checkpoints/step_*.h5): not a run folder, or a run "

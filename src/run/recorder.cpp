@@ -11,6 +11,8 @@
 #include "io/atomic_file.hpp"
 #include "metrics/body_metrics.hpp"
 #include "metrics/energy.hpp"
+#include "run/interrupt.hpp"
+#include "run/run_folder.hpp"
 #include "run/snapshot.hpp"
 
 namespace coldspray::run {
@@ -26,7 +28,7 @@ std::string resolved_text(const case_file::Case& c) {
 std::filesystem::path prepared(const std::filesystem::path& out, const std::string& resolved_case,
                                io::Opening opening) {
   if (opening == io::Opening::Resume) return out;
-  std::filesystem::create_directories(out / "snapshots");
+  prepare_run_folder(out);
   io::write_atomically(out / "case.resolved.yaml", [&](std::ostream& os) { os << resolved_case; });
   return out;
 }
@@ -45,11 +47,12 @@ Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::files
       history_due_(c.output.history_interval),
       snapshot_due_(c.output.snapshot_interval),
       verdict_(c.metrics, s),
-      checkpoints_(c.output) {
+      checkpoints_(c.output),
+      checks_(metrics::energy_budget(s).total()) {
   summary_.threads = omp_get_max_threads();
   summary_.particles = s.points.size();
   summary_.discretisation = s.discretisation;
-  summary_.total_energy_initial = metrics::energy_budget(s).total();
+  summary_.total_energy_initial = checks_.initial_total();
 }
 
 void Recorder::start(const bodies::Bodies& s) {
@@ -60,27 +63,21 @@ void Recorder::start(const bodies::Bodies& s) {
 }
 
 Recorder::Due Recorder::falling_due(const bodies::Bodies& s, bool last) const {
-  return {last || history_due_.due(s.time),
+  return {FaultChecks::due(s, last), last || history_due_.due(s.time),
           !last && snapshot_interval_ > 0.0 && snapshot_due_.due(s.time)};
 }
 
 bool Recorder::due(const bodies::Bodies& s, bool last) const {
   const Due d = falling_due(s, last);
-  return d.rows || d.snapshot;
+  return d.checks || d.rows || d.snapshot;
 }
 
 void Recorder::after_step(const bodies::Bodies& s, bool last) {
   const Due d = falling_due(s, last);
-  if (d.rows) {
-    history_due_.done(s.time);
-    const metrics::EnergyBudget e = write_rows(s);
-    // (A run that starts with no energy at all, bodies at rest, has no scale to grow against.)
-    if (summary_.total_energy_initial > 0.0 &&
-        e.total() > (1.0 + kEnergyGrowthLimit) * summary_.total_energy_initial)
-      throw RunFault(
-          fmt::format("total energy grew to {:.4g} J from {:.4g} J at t = {:.6g} ns "
-                      "(an instability: try a smaller solver.cfl)",
-                      e.total(), summary_.total_energy_initial, s.time * 1e9));
+  if (d.checks || d.rows) {
+    const metrics::EnergyBudget e = metrics::energy_budget(s);
+    if (d.checks) checks_.check(s, e);
+    if (d.rows) rows(s, e);
   }
   if (d.snapshot) {
     snapshot_due_.done(s.time);
@@ -88,17 +85,16 @@ void Recorder::after_step(const bodies::Bodies& s, bool last) {
   }
 }
 
-metrics::EnergyBudget Recorder::write_rows(const bodies::Bodies& s) {
-  const metrics::EnergyBudget e = metrics::energy_budget(s);
+void Recorder::rows(const bodies::Bodies& s, const metrics::EnergyBudget& e) {
+  history_due_.done(s.time);
   history_.record(s.time, e, metrics::body_metrics(s));
   contact_history_.record(s);
   probes_.record(s);
-  last_rows_time_ = s.time;
-  return e;
+  last_row_time_ = s.time;
 }
 
 void Recorder::write_last_rows(const bodies::Bodies& s) {
-  if (s.time != last_rows_time_) write_rows(s);
+  if (last_row_time_ != s.time) rows(s, metrics::energy_budget(s));
 }
 
 void Recorder::snapshot(const bodies::Bodies& s) {
@@ -133,12 +129,10 @@ std::vector<const io::AppendedFile*> Recorder::tables() const {
 
 void Recorder::remove_unlisted_snapshots() const {
   const std::vector<std::string> listed = pvd_.files();
-  for (const auto& entry : std::filesystem::directory_iterator(out_ / "snapshots")) {
-    const std::string name = "snapshots/" + entry.path().filename().string();
-    if (entry.path().extension() == ".vtu" &&
-        std::find(listed.begin(), listed.end(), name) == listed.end())
-      std::filesystem::remove(entry.path());
-  }
+  for (const std::filesystem::path& file : step_files(out_ / "snapshots", ".vtu"))
+    if (std::find(listed.begin(), listed.end(), "snapshots/" + file.filename().string()) ==
+        listed.end())
+      std::filesystem::remove(file);
 }
 
 std::string Recorder::join_lines(const std::vector<std::string>& lines) {
@@ -152,6 +146,20 @@ std::vector<std::string> Recorder::split_lines(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+void Recorder::end_with_fault(const bodies::Bodies& s, const RunFault& fault) {
+  write_last_rows(s);
+  finish(s, fmt::format("fault: {}", fault.what()));
+  throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault.what(), out_.string()));
+}
+
+void Recorder::end_interrupted(const bodies::Bodies& s, int signal) {
+  write_last_rows(s);
+  finish(s, "interrupted");
+  throw Interrupted(signal, fmt::format("interrupted at t = {:.6g} ns, step {}; continue with: "
+                                        "coldspray run --restart {}",
+                                        s.time * 1e9, s.step, out_.string()));
 }
 
 }  // namespace coldspray::run

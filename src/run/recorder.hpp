@@ -11,10 +11,12 @@
 
 #include "bodies/bodies.hpp"
 #include "case/case.hpp"
+#include "core/error.hpp"
 #include "io/appended_file.hpp"
 #include "io/vtu.hpp"
 #include "run/checkpoint_policy.hpp"
 #include "run/contact_history.hpp"
+#include "run/fault_checks.hpp"
 #include "run/history.hpp"
 #include "run/probes.hpp"
 #include "run/schedule.hpp"
@@ -26,18 +28,21 @@ namespace coldspray::run {
 
 class Recorder {
  public:
-  // Creates the folder and writes case.resolved.yaml and the tables' headers; `s` is the state
-  // at t = 0. With io::Opening::Resume, a restarted run's recorder: the folder and its tables
-  // are left as they are for fields() to cut back to its checkpoint.
+  // Creates the folder (InputError if it is a file, under one, or unwritable), removes a
+  // previous run's results from it (run/run_folder.hpp) and writes case.resolved.yaml and the
+  // tables' headers; `s` is the state at t = 0. With io::Opening::Resume, a restarted run's
+  // recorder: the folder and its tables are left as they are for fields() to cut back to its
+  // checkpoint.
   Recorder(const case_file::Case& c, const bodies::Bodies& s, std::filesystem::path out,
            io::Opening opening = io::Opening::Create);
 
   // At t = 0: the first rows and the first snapshot.
   void start(const bodies::Bodies& s);
-  // Whether rows or a snapshot fall due after the step that ended at s.time.
+  // Whether the fault checks, rows or a snapshot fall due after the step that ended at s.time.
   bool due(const bodies::Bodies& s, bool last) const;
-  // After a step: the rows and the snapshot due (rows always on the `last` step; its snapshot is
-  // finish()'s). Throws RunFault when the total energy has grown past kEnergyGrowthLimit.
+  // After a step: the fault checks (run/fault_checks.hpp, every kFaultCheckStride steps and on
+  // the `last`), which throw RunFault, then the rows and the snapshot due (rows always on the
+  // `last` step; its snapshot is finish()'s).
   void after_step(const bodies::Bodies& s, bool last);
   // The rows at s.time, unless they were written at it: the tables of a run that stops early
   // end at the time it stopped.
@@ -55,8 +60,15 @@ class Recorder {
   // Wall time spent on the run, and how many of its steps it shared with other runs.
   void add_wall(double seconds) { summary_.wall_seconds += seconds; }
   void add_shared_step() { ++summary_.shared_steps; }
-  // The last snapshot, and summary.json with `status` ("ok" or "fault: ...").
+  // The last snapshot, and summary.json with `status` ("ok", "fault: ..." or "interrupted").
   Summary finish(const bodies::Bodies& s, const std::string& status);
+  // The fault path, wherever a run stops on `fault` (run_to_end, a bond family's trunk): the
+  // rows at the fault time if the tables do not end there yet, the last snapshot and the summary
+  // with the fault as status; then throws the RunFault naming the folder.
+  [[noreturn]] void end_with_fault(const bodies::Bodies& s, const RunFault& fault);
+  // The same on SIGINT or SIGTERM (run/interrupt.hpp): the rows at the time it stopped, the last
+  // snapshot and the summary with status "interrupted"; then throws Interrupted.
+  [[noreturn]] void end_interrupted(const bodies::Bodies& s, int signal);
 
   const std::filesystem::path& folder() const { return out_; }
   // The case as case.resolved.yaml has it (what a checkpoint restarts from).
@@ -92,13 +104,14 @@ class Recorder {
   }
 
  private:
-  // Rows (always on the last step) and a snapshot (never on it: finish() writes that one).
+  // The fault checks (every kFaultCheckStride steps and on the last), rows (always on the last
+  // step) and a snapshot (never on it: finish() writes that one).
   struct Due {
-    bool rows, snapshot;
+    bool checks, rows, snapshot;
   };
   Due falling_due(const bodies::Bodies& s, bool last) const;
+  void rows(const bodies::Bodies& s, const metrics::EnergyBudget& e);
   void snapshot(const bodies::Bodies& s);
-  metrics::EnergyBudget write_rows(const bodies::Bodies& s);
   std::vector<const io::AppendedFile*> tables() const;
   void remove_unlisted_snapshots() const;
   static std::string join_lines(const std::vector<std::string>& lines);
@@ -115,10 +128,8 @@ class Recorder {
   VerdictSeries verdict_;
   CheckpointPolicy checkpoints_;
   Summary summary_;
-  double last_rows_time_ = -1.0;  // s
+  FaultChecks checks_;
+  double last_row_time_ = -1.0;  // s; before t = 0 until the first rows
 };
-
-// A run whose total energy grows past (1 + this) times its initial total stops as a fault.
-inline constexpr double kEnergyGrowthLimit = 0.2;
 
 }  // namespace coldspray::run

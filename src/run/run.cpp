@@ -117,20 +117,14 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
         // The checkpoint first, so that the tables' lengths it records leave out the rows at
         // the interruption, which a restarted run does not write.
         if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall());
-        rec.write_last_rows(s);
-        rec.finish(s, "interrupted");
-        throw Interrupted(signal, fmt::format("interrupted at t = {:.6g} ns, step {}; continue "
-                                              "with: coldspray run --restart {}",
-                                              s.time * 1e9, s.step, rec.folder().string()));
+        rec.end_interrupted(s, signal);
       }
       progress.report(s, rule.end, wall(), last);
     }
   } catch (const RunFault& fault) {
     account();
     if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall(), /*at_fault=*/true);
-    rec.finish(s, fmt::format("fault: {}", fault.what()));
-    throw RunFault(fmt::format("{} (last snapshot, checkpoint and summary in {})", fault.what(),
-                               rec.folder().string()));
+    rec.end_with_fault(s, fault);
   }
   account();
   if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall());

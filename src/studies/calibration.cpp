@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "run/bond_family.hpp"
 #include "studies/case_runner.hpp"
 #include "studies/decision_boundary.hpp"
@@ -94,6 +95,7 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
       make_case({g, s, plan.x1.from, plan.x2.from, {}});
       make_case({g, s, plan.x1.to, plan.x2.to, {}});
     }
+  io::make_output_folder(options.out_dir);  // InputError if it is a file, under one, unwritable
   CalibrationCounts counts;
   counts.runs = runs.size();
   std::vector<fs::path> folders;

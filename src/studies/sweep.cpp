@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
+#include "io/output_folder.hpp"
 #include "studies/case_runner.hpp"
 
 namespace coldspray::studies {
@@ -122,7 +123,7 @@ SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file:
     case_file::load_case(case_path, all);
   }
   const std::vector<SweepCase> cases = sweep_cases(vary);
-  fs::create_directories(options.out_dir);
+  io::make_output_folder(options.out_dir);  // InputError if it is a file, under one, unwritable
 
   SweepCounts counts;
   counts.cases = cases.size();

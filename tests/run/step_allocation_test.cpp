@@ -1,7 +1,7 @@
 // The step allocates nothing (issue 23's "the step must allocate nothing"; docs/solvers.md): the
-// MPM's and the peridynamics' steps, counted with a replaced global operator new, over steps in
-// which the peridynamics contact list is not rebuilt (a rebuild may grow it when more pairs come
-// close than ever before, pd/state.hpp).
+// MPM's and the peridynamics' steps and the run's fault checks, counted with a replaced global
+// operator new, over steps in which the peridynamics contact list is not rebuilt (a rebuild may
+// grow it when more pairs come close than ever before, pd/state.hpp).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -13,10 +13,12 @@
 #include <vector>
 
 #include "case/load.hpp"
+#include "metrics/energy.hpp"
 #include "mpm/setup.hpp"
 #include "mpm/stepper.hpp"
 #include "pd/setup.hpp"
 #include "pd/stepper.hpp"
+#include "run/fault_checks.hpp"
 
 namespace {
 
@@ -134,6 +136,21 @@ TEST(StepAllocation, TheMpmStepAllocatesNothing) {
       allocations_in_steps(s, c.solver.cfl, 20, 30, [](const mpm::State&) { return 0L; });
   EXPECT_EQ(steps, 30);
   EXPECT_EQ(counted, 0);
+}
+
+// The run's fault checks every kFaultCheckStride steps (run/fault_checks.hpp) are part of the
+// step loop: on a valid state they allocate nothing either.
+TEST(StepAllocation, TheFaultChecksAllocateNothing) {
+  const case_file::Case c = example("bonding-impact");
+  mpm::State s = mpm::build_state(c);
+  const run::FaultChecks checks(metrics::energy_budget(s).total());
+  for (int n = 0; n < 20; ++n) advance(s, c.solver.cfl);
+  const metrics::EnergyBudget e = metrics::energy_budget(s);
+  allocations = 0;
+  counting = true;
+  checks.check(s, e);
+  counting = false;
+  EXPECT_EQ(allocations.load(), 0);
 }
 
 // With the elastic control and with the control along the flow (its pairs' histories and slip
