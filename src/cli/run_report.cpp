@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "cli/case_summary.hpp"
+#include "cli/thread_count.hpp"
 #include "run/run.hpp"
 
 namespace coldspray::cli {
@@ -14,7 +15,7 @@ void add_run_flags(CLI::App& sub, RunFlags& flags) {
   sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)");
   sub.add_option("--set", flags.sets, "Override a key: KEY=VALUE (repeatable)");
   sub.add_option("--threads", flags.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(machine_threads());
   sub.add_flag("--quiet", flags.quiet, "No progress line");
 }
 
