@@ -1,7 +1,6 @@
 // The validator of options that set a number of OpenMP threads (--threads, --threads-per-job):
-// from 1 to the processors of this machine. Each thread reserves its stack and per-thread work
-// buffers at set-up, so an absurd count (--threads 100000) exhausted the address space and
-// crashed; more threads than processors never run faster (docs/reliability.md).
+// from 1 to the processors of this machine: more threads than processors only share them, and an
+// absurd count (--threads 100000) segfaulted (docs/reliability.md).
 #pragma once
 
 #include <CLI/CLI.hpp>
