@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bodies/material_state.hpp"
+#include "case/key_locations.hpp"
 #include "core/error.hpp"
 #include "materials/stress_update.hpp"
 
@@ -28,9 +29,9 @@ void check_no_overlap(const case_file::Case& c, const std::vector<SeededBody>& s
       if (a == b) continue;
       for (const Vec3& x : seeded[a].points.position)
         if (geometry::contains(c.bodies[b].shape, x))
-          throw InputError(c.source_file, body_key(c.bodies[a], "shape"),
-                           fmt::format("body '{}' overlaps body '{}' at t = 0", c.bodies[a].name,
-                                       c.bodies[b].name));
+          case_file::fail_at(c, body_key(c.bodies[a], "shape"),
+                             fmt::format("body '{}' overlaps body '{}' at t = 0", c.bodies[a].name,
+                                         c.bodies[b].name));
     }
 }
 
@@ -102,8 +103,8 @@ std::vector<SeededBody> seed_bodies(const case_file::Case& c) {
     sd.spacing = b.spacing;
     sd.points = geometry::seed(b.shape, geometry::Lattice{Vec3::Zero(), b.spacing, axi});
     if (sd.points.position.empty())
-      throw InputError(
-          c.source_file, body_key(b, "spacing"),
+      case_file::fail_at(
+          c, body_key(b, "spacing"),
           fmt::format("body '{}' has no points: its spacing is larger than its shape", b.name));
     sd.bound();
     seeded.push_back(std::move(sd));
@@ -132,8 +133,8 @@ void cut_at_planes(const case_file::Case& c, const std::vector<CutPlane>& planes
       kept.outside.push_back(sd.points.outside[i]);
     }
     if (kept.position.empty())
-      throw InputError(
-          c.source_file, body_key(c.bodies[b], "shape"),
+      case_file::fail_at(
+          c, body_key(c.bodies[b], "shape"),
           fmt::format("body '{}' lies wholly beyond {}", c.bodies[b].name, planes_name));
     sd.points = std::move(kept);
     sd.bound();

@@ -198,10 +198,25 @@ struct Output {
   friend bool operator==(const Output&, const Output&) = default;
 };
 
+// Caps on a case's size, checked when the case is loaded, before anything is allocated: a case
+// beyond them would exhaust the memory or run for ever (docs/reliability.md, "Input that cannot
+// crash or stall"). An absent cap on points or grid nodes is computed from the memory available
+// when the case is checked (case/size_limits.hpp).
+struct Limits {
+  std::optional<double> max_points;
+  std::optional<double> max_grid_nodes;
+  double max_steps = 1e8;
+
+  friend bool operator==(const Limits&, const Limits&) = default;
+};
+
 struct Case {
   std::string name;
   std::string description;
   std::string source_file;  // path the case was read from
+  // Where each key of the case was given: dotted key path (list items by name or index) ->
+  // "FILE:LINE:COLUMN" or "--set KEY", for the errors that set-up finds after loading.
+  std::map<std::string, std::string> key_locations;
   // Materials the bodies use, resolved (built-in, or user-defined with an optional base).
   std::map<std::string, materials::Material> materials;
   std::vector<Body> bodies;
@@ -216,6 +231,7 @@ struct Case {
   Bonding bonding;
   ImpactMetrics metrics;
   Output output;
+  Limits limits;
 };
 
 }  // namespace coldspray::case_file

@@ -199,6 +199,17 @@ void fields(IO& io, Output& o) {
   io.scalar("checkpoint_keep", o.checkpoint_keep, WholeNumber{1}, kOptional);
 }
 
+// Up to 1e15: the seeding's lattice indices and the grid's node counts stay far inside their
+// integer types below it.
+inline constexpr Range kCountLimit{1.0, 1e15, false, false};
+
+template <class IO>
+void fields(IO& io, Limits& l) {
+  io.quantity("max_points", l.max_points, units::kDimensionless, kOptional, kCountLimit);
+  io.quantity("max_grid_nodes", l.max_grid_nodes, units::kDimensionless, kOptional, kCountLimit);
+  io.quantity("max_steps", l.max_steps, units::kDimensionless, kOptional, kCountLimit);
+}
+
 template <class IO>
 void fields(IO& io, Case& c) {
   io.scalar("name", c.name, Text{}, kRequired);
@@ -217,6 +228,7 @@ void fields(IO& io, Case& c) {
   io.section("bonding", c.bonding, kOptional);
   io.section("metrics", c.metrics, kOptional);
   io.section("output", c.output, kOptional);
+  io.section("limits", c.limits, kOptional);
 }
 
 }  // namespace coldspray::case_file

@@ -4,35 +4,33 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
+#include "case/plain_yaml.hpp"
 #include "core/error.hpp"
 
 namespace coldspray::case_file {
 
 namespace {
 
+// Whether `node` is `tree` or lies under it. A loop over a stack, not a recursion: how deep a
+// tree may be is plain_yaml's and the --set key paths' business, not the call stack's.
 bool contains(const YAML::Node& tree, const YAML::Node& node) {
-  if (tree.is(node)) return true;
-  if (tree.IsMap()) {
-    for (const auto& entry : tree) {
-      if (contains(entry.first, node) || contains(entry.second, node)) return true;
-    }
-  } else if (tree.IsSequence()) {
-    for (const auto& item : tree) {
-      if (contains(item, node)) return true;
+  std::vector<YAML::Node> pending{tree};
+  while (!pending.empty()) {
+    const YAML::Node at = pending.back();
+    pending.pop_back();
+    if (at.is(node)) return true;
+    if (at.IsMap()) {
+      for (const auto& entry : at) {
+        pending.push_back(entry.first);
+        pending.push_back(entry.second);
+      }
+    } else if (at.IsSequence()) {
+      for (const auto& item : at) pending.push_back(item);
     }
   }
   return false;
-}
-
-YAML::Node parse(const std::string& name, std::istream& in) {
-  try {
-    return YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(
-        name + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1), "",
-        "invalid YAML: " + e.msg);
-  }
 }
 
 }  // namespace
@@ -43,12 +41,13 @@ Document Document::from_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open the file for reading");
-  return Document(path, parse(path, in));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return from_text(path, text.str());
 }
 
 Document Document::from_text(std::string name, std::string_view text) {
-  std::istringstream in{std::string(text)};
-  YAML::Node root = parse(name, in);
+  YAML::Node root = load_plain_yaml(text, {name, ""});
   return Document(std::move(name), std::move(root));
 }
 
@@ -138,6 +137,13 @@ std::string item_label(const YAML::Node& item, std::size_t index) {
     return item["name"].Scalar();
   }
   return std::to_string(index);
+}
+
+void fail_at(const Document& doc, const std::vector<std::string>& path,
+             const std::string& message) {
+  std::string key;
+  for (const std::string& segment : path) key += (key.empty() ? "" : ".") + segment;
+  throw InputError(doc.where(path), key, message);
 }
 
 std::string describe(const YAML::Node& node) {

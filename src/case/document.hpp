@@ -64,6 +64,11 @@ std::optional<std::size_t> find_item(const YAML::Node& list, std::string_view se
 // How a key path names a list item: by its `name` when it has one, else by its index.
 std::string item_label(const YAML::Node& item, std::size_t index);
 
+// InputError located at the node of the key path (or its deepest existing ancestor), naming the
+// dotted key path.
+[[noreturn]] void fail_at(const Document& doc, const std::vector<std::string>& path,
+                          const std::string& message);
+
 // "a map", "a list", "nothing", "text 'abc'": for "expected X, got Y" messages.
 std::string describe(const YAML::Node& node);
 

@@ -10,8 +10,10 @@
 #include "case/case_materials.hpp"
 #include "case/case_schema.hpp"
 #include "case/document.hpp"
+#include "case/key_locations.hpp"
 #include "case/overrides.hpp"
 #include "case/reader.hpp"
+#include "case/size_limits.hpp"
 #include "case/validate.hpp"
 #include "case/writer.hpp"
 
@@ -32,6 +34,8 @@ Case read_case(Document& doc, const std::vector<Override>& overrides) {
     if (!(root["solver"] && root["solver"]["cfl"])) c.solver.cfl = kPeridynamicsCfl;
   }
   check_consistency(doc, c);
+  check_size_limits(doc, c);
+  c.key_locations = key_locations(doc);
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <vector>
 
+#include "case/plain_yaml.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 
@@ -20,16 +21,17 @@ std::vector<std::string> split_path(const Override& o) {
       throw InputError("--set " + o.key, o.key, "empty name in the key path (KEY is like a.b.c)");
     }
     if (dot == std::string::npos) return segments;
+    if (segments.size() == static_cast<std::size_t>(kMaxNesting)) {
+      throw InputError(
+          "--set " + o.key, o.key,
+          "a key path of more than " + std::to_string(kMaxNesting) + " names is not accepted");
+    }
     start = dot + 1;
   }
 }
 
 YAML::Node parse_value(const Override& o) {
-  try {
-    return YAML::Load(o.value);
-  } catch (const YAML::ParserException& e) {
-    throw InputError("--set " + o.key, o.key, "invalid YAML value '" + o.value + "': " + e.msg);
-  }
+  return load_plain_yaml(o.value, {"--set " + o.key, o.key});
 }
 
 std::string item_names(const YAML::Node& list) {

@@ -1,5 +1,7 @@
 #include "case/reader.hpp"
 
+#include <unordered_map>
+
 #include "case/case_materials.hpp"
 #include "case/retired_keys.hpp"
 #include "case/shortest_number.hpp"
@@ -13,18 +15,19 @@ Reader::Reader(const Document& doc, const YAML::Node& map, std::string path, boo
   if (!map.IsMap()) {
     throw InputError(doc_.where(map), path_, "expected a map of keys, got " + describe(map));
   }
+  // Each name's entry, by a hash lookup: a map of many keys is read in time linear in them.
+  std::unordered_map<std::string, std::size_t> seen;
   for (const auto& entry : map) {
     if (!entry.first.IsScalar()) {
       throw InputError(doc_.where(entry.first), path_,
                        "a key must be a plain name, got " + describe(entry.first));
     }
     const std::string& name = entry.first.Scalar();
-    for (const Entry& earlier : entries_) {
-      if (earlier.name == name) {
-        throw InputError(doc_.where(entry.first, entry.second), path_of(name),
-                         "duplicate key '" + name + "' (first given at " +
-                             doc_.where(earlier.key, earlier.value) + ")");
-      }
+    if (const auto [earlier, fresh] = seen.emplace(name, entries_.size()); !fresh) {
+      const Entry& first = entries_[earlier->second];
+      throw InputError(doc_.where(entry.first, entry.second), path_of(name),
+                       "duplicate key '" + name + "' (first given at " +
+                           doc_.where(first.key, first.value) + ")");
     }
     entries_.push_back({entry.first, entry.second, name});
   }

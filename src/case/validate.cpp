@@ -11,13 +11,6 @@ namespace coldspray::case_file {
 
 namespace {
 
-[[noreturn]] void fail(const Document& doc, const std::vector<std::string>& path,
-                       const std::string& message) {
-  std::string key;
-  for (const std::string& segment : path) key += (key.empty() ? "" : ".") + segment;
-  throw InputError(doc.where(path), key, message);
-}
-
 void check_contact_body(const Document& doc, const Case& c) {
   if (c.contact.normal != ContactNormal::Body) return;
   std::vector<std::string_view> names;
@@ -25,37 +18,38 @@ void check_contact_body(const Document& doc, const Case& c) {
     if (b.name == c.contact.normal_body) return;
     names.push_back(b.name);
   }
-  fail(doc, {"contact", "normal"}, unknown_word("body", c.contact.normal_body, names));
+  fail_at(doc, {"contact", "normal"}, unknown_word("body", c.contact.normal_body, names));
 }
 
 void check_spacing(const Document& doc, const Grid& grid, const Body& b) {
   if (b.spacing <= grid.cell_size) return;
-  fail(doc, {"bodies", b.name, "spacing"},
-       "must not exceed grid.cell_size (" + shortest_text(b.spacing) + " m > " +
-           shortest_text(grid.cell_size) + " m)");
+  fail_at(doc, {"bodies", b.name, "spacing"},
+          "must not exceed grid.cell_size (" + shortest_text(b.spacing) + " m > " +
+              shortest_text(grid.cell_size) + " m)");
 }
 
 // The MPM needs its grid; PD runs in 3D (its families and contact are three-dimensional).
 void check_solver_sections(const Document& doc, const Case& c) {
   switch (c.solver.method) {
     case Method::Mpm:
-      if (!c.grid) fail(doc, {"grid"}, "missing: solver.method mpm needs a grid (grid.cell_size)");
+      if (!c.grid)
+        fail_at(doc, {"grid"}, "missing: solver.method mpm needs a grid (grid.cell_size)");
       if (c.symmetry)
-        fail(doc, {"symmetry"},
-             "is peridynamics only: with solver.method mpm, the symmetry planes are the grid's "
-             "roller faces (grid.faces)");
+        fail_at(doc, {"symmetry"},
+                "is peridynamics only: with solver.method mpm, the symmetry planes are the grid's "
+                "roller faces (grid.faces)");
       for (const Body& b : c.bodies)
         if (!b.roller.empty())
-          fail(doc, {"bodies", b.name, "roller"},
-               "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
+          fail_at(doc, {"bodies", b.name, "roller"},
+                  "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
       return;
     case Method::Peridynamics:
       if (c.solver.geometry != Geometry::ThreeD)
-        fail(doc, {"solver", "geometry"},
-             "must be 3d with solver.method peridynamics (axisymmetric is MPM only)");
+        fail_at(doc, {"solver", "geometry"},
+                "must be 3d with solver.method peridynamics (axisymmetric is MPM only)");
       if (c.bonding.model != BondingModel::None)
-        fail(doc, {"bonding", "model"},
-             "must be none with solver.method peridynamics (the direct bonding model is MPM's)");
+        fail_at(doc, {"bonding", "model"},
+                "must be none with solver.method peridynamics (the direct bonding model is MPM's)");
       return;
   }
 }
@@ -64,21 +58,21 @@ bool on_z_axis(const Vec3& v) { return v.x() == 0.0 && v.y() == 0.0; }
 
 void check_axisymmetric(const Document& doc, const Body& b) {
   if (std::holds_alternative<Box>(b.shape)) {
-    fail(doc, {"bodies", b.name, "shape", "type"},
-         "a box is not symmetric about the z axis; axisymmetric geometry takes spheres and "
-         "cylinders");
+    fail_at(doc, {"bodies", b.name, "shape", "type"},
+            "a box is not symmetric about the z axis; axisymmetric geometry takes spheres and "
+            "cylinders");
   }
   if (const auto* s = std::get_if<Sphere>(&b.shape); s && !on_z_axis(s->center)) {
-    fail(doc, {"bodies", b.name, "shape", "center"},
-         "must lie on the z axis (x = y = 0) in axisymmetric geometry");
+    fail_at(doc, {"bodies", b.name, "shape", "center"},
+            "must lie on the z axis (x = y = 0) in axisymmetric geometry");
   }
   if (const auto* cyl = std::get_if<Cylinder>(&b.shape); cyl && !on_z_axis(cyl->base_center)) {
-    fail(doc, {"bodies", b.name, "shape", "base_center"},
-         "must lie on the z axis (x = y = 0) in axisymmetric geometry");
+    fail_at(doc, {"bodies", b.name, "shape", "base_center"},
+            "must lie on the z axis (x = y = 0) in axisymmetric geometry");
   }
   if (!on_z_axis(b.velocity)) {
-    fail(doc, {"bodies", b.name, "velocity"},
-         "must be along z (x = y = 0) in axisymmetric geometry");
+    fail_at(doc, {"bodies", b.name, "velocity"},
+            "must be along z (x = y = 0) in axisymmetric geometry");
   }
 }
 
@@ -89,7 +83,7 @@ void check_consistency(const Document& doc, const Case& c) {
   check_solver_sections(doc, c);
   if (c.solver.geometry == Geometry::ThreeD && c.grid && c.grid->min && c.grid->max &&
       (*c.grid->min)[1] >= (*c.grid->max)[1])
-    fail(doc, {"grid", "max"}, "must be greater than min in y in 3D geometry");
+    fail_at(doc, {"grid", "max"}, "must be greater than min in y in 3D geometry");
   for (const Body& b : c.bodies) {
     if (c.solver.method == Method::Mpm) check_spacing(doc, *c.grid, b);
     if (c.solver.geometry == Geometry::Axisymmetric) check_axisymmetric(doc, b);

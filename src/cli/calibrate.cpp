@@ -7,6 +7,7 @@
 
 #include "cli/calibration_file.hpp"
 #include "cli/commands.hpp"
+#include "cli/thread_count.hpp"
 #include "studies/calibration.hpp"
 #include "studies/mpi_session.hpp"
 
@@ -79,7 +80,7 @@ void add_calibrate(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,
                   "OpenMP threads per impact (default: the cores shared among the jobs)")
-      ->check(CLI::PositiveNumber);
+      ->check(machine_threads());
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt] {
     const CalibrationFile file = read_calibration_file(opt->file);

@@ -3,54 +3,83 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
+#include <array>
 #include <ostream>
+#include <utility>
+
+#include "case/shape_bounds.hpp"
+#include "case/size_estimate.hpp"
 
 namespace coldspray::cli {
 
 namespace {
 
-struct ShapeDescription {
-  std::string text;
-  double volume;   // m^3, for the point-count estimate in 3D
-  double section;  // m^2, the r-z half-section (x >= 0), for the estimate in r-z
+// A length unit, for printing the case in the scale it was written in.
+struct LengthUnit {
+  const char* symbol;
+  double metres;
 };
 
-ShapeDescription describe(const case_file::Shape& shape) {
-  using std::numbers::pi;
+// The unit in which the largest body measures from 1 to 1000: um for a particle, mm for a
+// Taylor bar, so that check's summary reads as the case file does.
+LengthUnit unit_of_scale(const case_file::Case& c) {
+  double largest = 0.0;
+  for (const auto& b : c.bodies) {
+    const case_file::Bounds box = case_file::bounding_box(b.shape);
+    largest = std::max(largest, (box.max - box.min).maxCoeff());
+  }
+  static constexpr std::array<LengthUnit, 4> kUnits{
+      {{"m", 1.0}, {"mm", 1e-3}, {"um", 1e-6}, {"nm", 1e-9}}};
+  for (const LengthUnit& u : kUnits)
+    if (largest >= u.metres) return u;
+  return kUnits.back();
+}
+
+std::string describe(const case_file::Shape& shape, const LengthUnit& u) {
+  auto length = [&u](double metres) {
+    return fmt::format("{:.4g} {}", metres / u.metres, u.symbol);
+  };
   if (const auto* s = std::get_if<case_file::Sphere>(&shape))
-    return {fmt::format("sphere r = {:.4g} um", s->radius * 1e6),
-            4.0 / 3.0 * pi * std::pow(s->radius, 3), 0.5 * pi * s->radius * s->radius};
+    return fmt::format("sphere r = {}", length(s->radius));
   if (const auto* c = std::get_if<case_file::Cylinder>(&shape))
-    return {fmt::format("cylinder r = {:.4g} um, h = {:.4g} um", c->radius * 1e6, c->height * 1e6),
-            pi * c->radius * c->radius * c->height, c->radius * c->height};
+    return fmt::format("cylinder r = {}, h = {}", length(c->radius), length(c->height));
   const auto& b = std::get<case_file::Box>(shape);
-  const Eigen::Vector3d size = b.max - b.min;
-  return {fmt::format("box {:.4g} x {:.4g} x {:.4g} um", size.x() * 1e6, size.y() * 1e6,
-                      size.z() * 1e6),
-          size.prod(), std::max(0.0, b.max.x() - std::max(b.min.x(), 0.0)) * size.z()};
+  const Eigen::Vector3d size = (b.max - b.min) / u.metres;
+  return fmt::format("box {:.4g} x {:.4g} x {:.4g} {}", size.x(), size.y(), size.z(), u.symbol);
 }
 
 }  // namespace
 
 void print_case_summary(const case_file::Case& c, std::ostream& out) {
   const bool axisymmetric = c.solver.geometry == case_file::Geometry::Axisymmetric;
+  const LengthUnit u = unit_of_scale(c);
   out << fmt::format("case '{}': {}, {} bodies, end time {:.4g} ns\n", c.name,
                      axisymmetric ? "axisymmetric" : "3D", c.bodies.size(),
                      c.solver.end_time * 1e9);
   for (const auto& b : c.bodies) {
-    const ShapeDescription shape = describe(b.shape);
-    const double points = axisymmetric ? shape.section / std::pow(b.spacing, 2)
-                                       : shape.volume / std::pow(b.spacing, 3);
-    out << fmt::format("  body '{}': {}, material {}, spacing {:.4g} um, ~{:.3g} points\n", b.name,
-                       shape.text, b.material, b.spacing * 1e6, points);
+    out << fmt::format("  body '{}': {}, material {}, spacing {:.4g} {}, ~{:.3g} points\n", b.name,
+                       describe(b.shape, u), b.material, b.spacing / u.metres, u.symbol,
+                       case_file::estimated_points(c, b));
   }
   if (c.solver.method == case_file::Method::Peridynamics)
     out << fmt::format("  peridynamics, horizon {:.4g} x spacing\n",
                        c.peridynamics->horizon_factor);
-  else
-    out << fmt::format("  MPM, grid cell {:.4g} um\n", c.grid->cell_size * 1e6);
+  else {
+    const std::array<double, 3> nodes = case_file::estimated_grid_nodes(c);
+    out << fmt::format("  MPM, grid cell {:.4g} {}, ~{:.3g} nodes\n", c.grid->cell_size / u.metres,
+                       u.symbol, nodes[0] * nodes[1] * nodes[2]);
+  }
+  const case_file::FirstStep first = case_file::first_time_step(c);
+  out << fmt::format("  first time step {:.3g} ns, ~{:.3g} steps\n", first.dt * 1e9,
+                     c.solver.end_time / first.dt);
+  // Outputs come at most once a step: an interval below it is honoured at every step.
+  for (const auto& [key, interval] : {std::pair{"history_interval", c.output.history_interval},
+                                      std::pair{"snapshot_interval", c.output.snapshot_interval}})
+    if (interval > 0.0 && interval < first.dt)
+      out << fmt::format(
+          "  warning: output.{} ({:.3g} ns) is shorter than the first time step: an output "
+          "every step\n",
+          key, interval * 1e9);
 }
 
 }  // namespace coldspray::cli

@@ -87,8 +87,8 @@ std::pair<double, double> parse_grid(const std::string& text) {
     if (next == std::string::npos ||
         !(std::isdigit(static_cast<unsigned char>(text[next])) || text[next] == '.'))
       continue;
-    return {units::parse_as(text.substr(0, i), units::kLength),
-            units::parse_as(text.substr(i + 1), units::kLength)};
+    return {parse_with_unit(text.substr(0, i), units::kLength),
+            parse_with_unit(text.substr(i + 1), units::kLength)};
   }
   throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
 }

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/unknown_option.hpp"
 #include "core/error.hpp"
 #include "run/interrupt.hpp"
 
@@ -32,6 +33,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // An unknown option first: it often explains the error CLI11 reports (a required option
+    // "missing" because it was misnamed).
+    if (const auto unknown = cli::unknown_option_message(app)) {
+      std::cerr << "error: " << *unknown << "\n";
+      return kExitBadInput;
+    }
     app.exit(e);
     return kExitBadInput;
   } catch (const InputError& e) {

@@ -1,5 +1,7 @@
 // Command-line values that carry units ("1e7 1/s", "298 K"), read through the case-file unit
-// parser so the command line and case files accept the same spellings.
+// parser so the command line and case files accept the same spellings. Unlike a case file, the
+// command line takes no bare number for a length, a speed or a time: `--diameter 20` would be
+// 20 m, a particle a million times too large, where the user meant 20 um.
 #pragma once
 
 #include <string>
@@ -8,7 +10,11 @@
 
 namespace coldspray::cli {
 
-// Parses `text` as a quantity of `expected` dimension; InputError names `option` on failure.
+// Parses `text` as a quantity of `expected` dimension; UnitError if malformed, of another
+// dimension, or a bare number where a length, velocity or time is expected.
+double parse_with_unit(const std::string& text, const units::Dimension& expected);
+
+// The same; InputError names `option` on failure.
 double parse_option_quantity(const std::string& option, const std::string& text,
                              const units::Dimension& expected);
 

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "cli/case_summary.hpp"
+#include "cli/thread_count.hpp"
 #include "core/error.hpp"
 #include "run/run.hpp"
 #include "run/run_folder.hpp"
@@ -18,7 +19,7 @@ void add_run_flags(CLI::App& sub, RunFlags& flags) {
                "Replace the results of a previous run in the output folder");
   sub.add_option("--set", flags.sets, "Override a key: KEY=VALUE (repeatable)");
   sub.add_option("--threads", flags.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(machine_threads());
   sub.add_flag("--quiet", flags.quiet, "No progress line");
 }
 

@@ -9,6 +9,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/thread_count.hpp"
 #include "studies/mpi_session.hpp"
 
 namespace coldspray::cli {
@@ -33,7 +34,7 @@ void add_sweep(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,
                   "OpenMP threads per case (default: the cores shared among the jobs)")
-      ->check(CLI::PositiveNumber);
+      ->check(machine_threads());
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt] {
     std::vector<case_file::Override> base;

@@ -11,6 +11,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/thread_count.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/quantity_option.hpp"
 #include "cli/run_report.hpp"
@@ -84,7 +85,7 @@ void add_vcrit(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,
                   "OpenMP threads per impact (default: the cores shared among the jobs)")
-      ->check(CLI::PositiveNumber);
+      ->check(machine_threads());
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt, sub] {
     if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";

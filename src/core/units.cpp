@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <system_error>
 
@@ -45,6 +46,11 @@ constexpr std::array kPrefixes{
 
 constexpr std::array<std::string_view, 8> kTemperatureScales{
     "degC", "degF", "C", "F", "\u00b0C", "\u00b0F", "celsius", "fahrenheit"};
+
+// Powers of units, and of the base dimensions they add up to, stay within +-kMaxPower: no
+// physical quantity needs more, and the sums of powers and of decimal exponents then cannot
+// overflow an int.
+constexpr int kMaxPower = 12;
 
 constexpr std::string_view kKnownUnits =
     "known units: m, s, g, kg, K, Pa, J, N, W; prefixes n, u, m, c, k, M, G (not on K)";
@@ -106,12 +112,7 @@ class UnitExpression {
       if (op != '*' && op != '/') fail(unexpected());
       ++pos_;
       skip_spaces();
-      const Factor f = factor();
-      if (op == '*') {
-        total = {total.dimension * f.dimension, total.exponent10 + f.exponent10};
-      } else {
-        total = {total.dimension / f.dimension, total.exponent10 - f.exponent10};
-      }
+      total = combine(total, factor(), op);
     }
   }
 
@@ -146,9 +147,26 @@ class UnitExpression {
     const char* first = text_.data() + pos_;
     const char* last = text_.data() + text_.size();
     const auto [end, ec] = std::from_chars(first, last, power);
+    if (ec == std::errc::result_out_of_range || (ec == std::errc() && std::abs(power) > kMaxPower))
+      fail(fmt::format("a power must lie between -{0} and {0}", kMaxPower));
     if (ec != std::errc() || power == 0) fail("'^' must be followed by a non-zero integer power");
     pos_ += static_cast<std::size_t>(end - first);
     return power;
+  }
+
+  // The product so far times f (or divided by f), refused once a base dimension's power leaves
+  // +-kMaxPower: bounded powers keep every sum in an int, however many factors there are.
+  Factor combine(const Factor& total, const Factor& f, char op) const {
+    const Factor out = op == '*'
+                           ? Factor{total.dimension * f.dimension, total.exponent10 + f.exponent10}
+                           : Factor{total.dimension / f.dimension, total.exponent10 - f.exponent10};
+    const Dimension& d = out.dimension;
+    for (const int p : {d.mass, d.length, d.time, d.temperature})
+      if (std::abs(p) > kMaxPower)
+        fail(fmt::format("the unit's powers must lie between -{0} and {0}", kMaxPower));
+    // Prefixes that cancel in dimension (um/m) still scale: beyond 1e+-1000 no double is left.
+    if (std::abs(out.exponent10) > 1000) fail("the unit's scale is out of range");
+    return out;
   }
 
   std::string unexpected() const {

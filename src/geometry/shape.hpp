@@ -2,6 +2,7 @@
 #pragma once
 
 #include "case/case.hpp"
+#include "case/shape_bounds.hpp"
 
 namespace coldspray::geometry {
 
@@ -10,12 +11,8 @@ using case_file::Vec3;
 // True if x lies inside the shape or on its boundary.
 bool contains(const case_file::Shape& shape, const Vec3& x);
 
-struct Bounds {
-  Vec3 min = Vec3::Zero();
-  Vec3 max = Vec3::Zero();
-};
-
-// The smallest axis-aligned box holding the shape.
-Bounds bounding_box(const case_file::Shape& shape);
+// The smallest axis-aligned box holding the shape (case/shape_bounds.hpp).
+using case_file::bounding_box;
+using case_file::Bounds;
 
 }  // namespace coldspray::geometry

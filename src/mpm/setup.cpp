@@ -7,8 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 #include "bodies/seed_bodies.hpp"
+#include "case/grid_domain.hpp"
+#include "case/key_locations.hpp"
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
 #include "mpm/phases.hpp"
@@ -34,16 +37,7 @@ GridLayout place_grid(const case_file::Case& c, const std::vector<bodies::Seeded
     lo = lo.cwiseMin(s.min);
     hi = hi.cwiseMax(s.max);
   }
-  if (c.grid->min) {
-    lo = *c.grid->min;
-    hi = *c.grid->max;
-  } else {
-    const Vec3 margin =
-        (kGridMarginFraction * (hi - lo)).cwiseMax(Vec3::Constant(kGridMarginMinCells * h));
-    lo -= margin;
-    hi += margin;
-  }
-  if (axi) lo[0] = 0.0;
+  std::tie(lo, hi) = case_file::grid_domain(c, lo, hi);
   GridLayout g;
   g.h = h;
   g.axisymmetric = axi;
@@ -66,12 +60,13 @@ void check_inside_grid(const case_file::Case& c, const std::vector<bodies::Seede
     for (int d = 0; d < 3; ++d) {
       if (g.nodes[d] == 1) continue;
       const double tolerance = 1e-9 * g.h;
-      if (seeded[b].min[d] < g.origin[d] + g.h - tolerance ||
-          seeded[b].max[d] > g.extent(d) - g.h + tolerance)
-        throw InputError(c.source_file, "grid.min",
-                         fmt::format("body '{}' reaches outside the grid along {}: enlarge "
-                                     "grid.min/grid.max",
-                                     c.bodies[b].name, "xyz"[d]));
+      const bool below = seeded[b].min[d] < g.origin[d] + g.h - tolerance;
+      if (below || seeded[b].max[d] > g.extent(d) - g.h + tolerance) {
+        case_file::fail_at(c, below ? "grid.min" : "grid.max",
+                           fmt::format("body '{}' reaches outside the grid along {}: enlarge "
+                                       "grid.min/grid.max",
+                                       c.bodies[b].name, "xyz"[d]));
+      }
     }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "case/case.hpp"
+#include "case/grid_domain.hpp"
 #include "mpm/state.hpp"
 
 namespace coldspray::mpm {
@@ -11,11 +12,8 @@ namespace coldspray::mpm {
 // overlap at t = 0, a body outside a grid given by grid.min/max, a body with no points.
 State build_state(const case_file::Case& c);
 
-// The margin added around the bodies when grid.min/max are not given: half the bodies' extent
-// along each axis (at least 4 cells), so that rebounding and jetted material stays on the grid
-// through a typical impact. A point that still leaves the domain leaves the run
-// (mpm/departures.hpp).
-inline constexpr double kGridMarginFraction = 0.5;
-inline constexpr int kGridMarginMinCells = 4;
+// The margin around the bodies when grid.min/max are not given (case/grid_domain.hpp).
+using case_file::kGridMarginFraction;
+using case_file::kGridMarginMinCells;
 
 }  // namespace coldspray::mpm

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "materials/conduction_step.hpp"
 #include "mpm/boundaries.hpp"
 #include "mpm/departures.hpp"
 #include "mpm/heat_conduction.hpp"
@@ -108,11 +109,8 @@ void integrate_grid_momentum(State& s) {
 double stable_time_step(const State& s, double cfl) {
   const double mechanical = cfl * s.layout.h / s.max_signal_speed;
   if (!s.heat_conduction || s.max_diffusivity <= 0.0) return mechanical;
-  // Explicit conduction (forward Euler in time) is stable for alpha dt / h^2 <= 1 / (2 n) on a
-  // lattice of n dimensions; half of that, since a point's stencil spans more than two cells.
-  const double dimensions = s.layout.axisymmetric ? 2.0 : 3.0;
-  const double h = s.layout.h;
-  return std::min(mechanical, 0.5 * h * h / (2.0 * dimensions * s.max_diffusivity));
+  return std::min(mechanical, materials::conduction_step_limit(s.layout.h, s.layout.axisymmetric,
+                                                               s.max_diffusivity));
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "bodies/seed_bodies.hpp"
+#include "case/key_locations.hpp"
 #include "core/error.hpp"
 #include "pd/deformation.hpp"
 #include "pd/pair_forces.hpp"
@@ -40,8 +41,8 @@ void invert_moments(const case_file::Case& c, State& s) {
       const Eigen::Matrix3d K = shape_tensor(s.families, s.neighbours, weights, i);
       const MomentMatrix M = moment_matrix(s.families, s.neighbours, weights, i);
       if (singular(K) || singular(M))
-        throw InputError(
-            c.source_file, fmt::format("bodies.{}.spacing", body.name),
+        case_file::fail_at(
+            c, fmt::format("bodies.{}.spacing", body.name),
             fmt::format("point {} of body '{}' has a family of {} neighbours that does not span "
                         "three dimensions (singular shape tensor, PD paper eq 6, or moment "
                         "matrix): give the body more points across its thinnest part or a larger "

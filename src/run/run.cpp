@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <string>
 
 #include "core/error.hpp"
 #include "mpm/stepper.hpp"
@@ -18,24 +19,41 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The progress line. Its ETA extrapolates the rate of the steps measured since the first one
+// ended, not the first step's: that one also pays for first touches of memory and caches. Until
+// a later step is measured the ETA says "--".
 class Progress {
  public:
   explicit Progress(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
   void report(const bodies::Bodies& s, double end, double wall, bool last) {
     if (!enabled_) return;
+    if (!measuring_) {
+      measuring_ = true;
+      from_ = {wall, s.time};
+    }
     const double interval = tty_ ? 0.5 : 10.0;
     if (!last && wall - last_wall_ < interval) return;
     last_wall_ = wall;
     const double fraction = s.time / end;
-    const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
-    std::cerr << fmt::format("{}t = {:.3f} ns ({:.0f}%)  step {}  dt {:.3g} s  ETA {:.0f} s{}",
+    const double simulated = s.time - from_.time;
+    const std::string eta =
+        last ? "0 s"
+        : simulated > 0.0
+            ? fmt::format("{:.0f} s", (wall - from_.wall) / simulated * (end - s.time))
+            : "--";
+    std::cerr << fmt::format("{}t = {:.3f} ns ({:.0f}%)  step {}  dt {:.3g} s  ETA {}{}",
                              tty_ ? "\r" : "", s.time * 1e9, 100.0 * fraction, s.step, s.dt, eta,
                              tty_ && !last ? "   " : "\n");
   }
 
  private:
+  struct Mark {
+    double wall, time;
+  };
   bool enabled_, tty_;
   double last_wall_ = -1e30;
+  bool measuring_ = false;  // from_ is set: the end of the first step reported
+  Mark from_{0.0, 0.0};
 };
 
 // One step of the MPM: from its start, or from the contact decision of a copied run.

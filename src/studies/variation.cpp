@@ -47,9 +47,13 @@ std::vector<std::string> range_values(const std::string& text, const std::string
   const double start = q[0].value, stop = q[1].value, step = q[2].value;
   if (!(step > 0.0)) bad(text, "STEP must be > 0");
   if (stop < start) bad(text, "STOP must not be below START");
-  // Counted, not accumulated, so that STOP is reached without drift.
-  const auto count = static_cast<long>(std::floor((stop - start) / step * (1.0 + 1e-9))) + 1;
-  if (count > 100000) bad(text, fmt::format("{} values: too many", count));
+  // Counted, not accumulated, so that STOP is reached without drift; counted in double and
+  // bounded before the conversion, which overflowed for a tiny STEP (0.1:1:1e-20 gave no value).
+  const double intervals = std::floor((stop - start) / step * (1.0 + 1e-9));
+  if (!(intervals < static_cast<double>(kMaxSweepCases)))
+    bad(text, fmt::format("{:.3g} values: at most {} (a larger STEP gives fewer)", intervals + 1.0,
+                          kMaxSweepCases));
+  const auto count = static_cast<long>(intervals) + 1;
   std::vector<std::string> values;
   for (long i = 0; i < count; ++i) {
     const double v = start + static_cast<double>(i) * step;
@@ -79,6 +83,12 @@ Variation parse_variation(const std::string& text) {
 }
 
 std::vector<std::vector<case_file::Override>> combinations(const std::vector<Variation>& vary) {
+  double count = 1.0;
+  for (const Variation& v : vary) count *= static_cast<double>(v.values.size());
+  if (count > static_cast<double>(kMaxSweepCases))
+    throw InputError(
+        "--vary", "",
+        fmt::format("{:.3g} combinations of the varied values: at most {}", count, kMaxSweepCases));
   std::vector<std::vector<case_file::Override>> out(1);
   for (const Variation& v : vary) {
     std::vector<std::vector<case_file::Override>> next;

@@ -9,6 +9,10 @@
 
 namespace coldspray::studies {
 
+// The most values a range gives, and the most combinations a sweep runs: more cases than anyone
+// waits for, and each costs a folder and a line of the table (docs/reliability.md).
+inline constexpr long kMaxSweepCases = 100000;
+
 struct Variation {
   std::string key;                  // a case-file key path, as for --set
   std::vector<std::string> values;  // each as --set would take it (units allowed)
@@ -19,7 +23,8 @@ struct Variation {
 // the grid; the values are written as SI numbers). Throws InputError naming `--vary`.
 Variation parse_variation(const std::string& text);
 
-// The Cartesian product, the last variation varying fastest.
+// The Cartesian product, the last variation varying fastest; InputError naming `--vary` beyond
+// kMaxSweepCases combinations.
 std::vector<std::vector<case_file::Override>> combinations(const std::vector<Variation>& vary);
 
 }  // namespace coldspray::studies

@@ -13,4 +13,9 @@ struct CommandResult {
 // Runs `coldspray ARGS` through the shell in `workdir` (default: a fresh temporary folder).
 CommandResult run_coldspray(const std::string& args, const std::string& workdir = "");
 
+// Whether the command printed `part`.
+inline bool has(const CommandResult& r, const std::string& part) {
+  return r.output.find(part) != std::string::npos;
+}
+
 }  // namespace coldspray::testing

@@ -171,5 +171,30 @@ TEST(DimensionName, NamesCommonDimensionsAndFallsBackToTheUnit) {
   EXPECT_EQ(dimension_name(kLength / kTime.pow(2)), "m/s^2");
 }
 
+// Powers used to wrap around in int: um^2147483647*um^2147483647*um^3 came out as plain um
+// (and UBSan reported the overflow). Powers of units and of the base dimensions are bounded.
+TEST(ParseQuantity, RefusesPowersThatCouldOverflow) {
+  auto message = [](const char* text) {
+    try {
+      parse_quantity(text);
+    } catch (const UnitError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message("7 um^2147483647*um^2147483647*um^3").find("between -12 and 12"),
+            std::string::npos);
+  EXPECT_NE(message("7 m^99999999999").find("between -12 and 12"), std::string::npos);
+  EXPECT_NE(message("7 m^13").find("between -12 and 12"), std::string::npos);
+  std::string many = "7 m";
+  for (int i = 0; i < 12; ++i) many += "*m";
+  EXPECT_NE(message(many.c_str()).find("the unit's powers"), std::string::npos);
+  std::string scaled = "7 1";
+  for (int i = 0; i < 200; ++i) scaled += "/um*m";
+  EXPECT_NE(message(scaled.c_str()).find("scale is out of range"), std::string::npos);
+  EXPECT_EQ(parse_quantity("1 m^12").dimension, kLength.pow(12));
+  EXPECT_EQ(parse_quantity("1 m^-12").dimension, kLength.pow(-12));
+}
+
 }  // namespace
 }  // namespace coldspray::units
