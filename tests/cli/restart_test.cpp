@@ -104,6 +104,17 @@ TEST(Restart, MpmAxisymmetricWithBondingIsBitIdentical) {
       "--set output.snapshot_interval=1ns");
 }
 
+TEST(Restart, Mpm3dQuarterWithBondsFormedIsBitIdentical) {
+  // The 14 um Al impact at 810 m/s on a quarter model at 1 um spacing: the particle's bonded
+  // area more than doubles after the checkpoint at 3 ns (abp 0.31 then, 0.70 at 8 ns).
+  expect_restart_bit_identical(
+      kExamples + "sliding-impact-3d.yaml",
+      "--set bonding.model=energy --set bodies.particle.spacing=1um "
+      "--set bodies.substrate.spacing=1um --set grid.cell_size=2um --set solver.end_time=8ns "
+      "--set metrics.verdict_extensions=0 --set output.checkpoint_interval=3ns "
+      "--set output.snapshot_interval=2ns");
+}
+
 TEST(Restart, Mpm3dWithBondingAndDeparturesIsBitIdentical) {
   // The fragment leaves the grid after the first checkpoint: the restart reads fewer points
   // than its setup seeds.
