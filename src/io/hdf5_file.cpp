@@ -37,8 +37,13 @@ class Handle {
 
 Hdf5File::Hdf5File(const std::filesystem::path& path, Mode mode) : path_(path) {
   silence_hdf5_errors();
-  file_ = mode == Mode::Create ? H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-                               : H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  // No file locks: a checkpoint is written to a file of its own and renamed (run/checkpoints.cpp),
+  // and the locks HDF5 takes by default fail on file systems without them (NFS, some Lustre
+  // mounts of the clusters a user may move to).
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_file_locking(access.get(), false, true);
+  file_ = mode == Mode::Create ? H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get())
+                               : H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get());
   if (file_ >= 0) return;
   if (mode == Mode::Create) throw RunFault(fmt::format("cannot create '{}'", path.string()));
   throw InputError(path.string(), "", "not a readable HDF5 file");
