@@ -218,24 +218,27 @@ int exit_status(pid_t pid) {
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
 }
 
-// The peridynamics impact to 25 ns with a checkpoint every 1 ns of simulated time: long enough
-// (several seconds) for a signal to land mid-run.
+// The peridynamics quarter impact with a checkpoint every 0.5 ns of simulated time, to 12 ns
+// (long_run_args): a signal sent once the first checkpoint exists lands mid-run (the rest takes
+// 0.7 s in the release build, minutes under the sanitizers).
 const std::vector<std::string> kLongRunSets = {"--set", "symmetry.x=0um",
                                                "--set", "symmetry.y=0um",
-                                               "--set", "output.checkpoint_interval=1ns",
+                                               "--set", "output.checkpoint_interval=0.5ns",
                                                "--set", "output.snapshot_interval=5ns"};
+const std::string kLongRunEnd = "solver.end_time=12ns";
 
 std::vector<std::string> long_run_args(const fs::path& out) {
-  std::vector<std::string> args = {"run", kExamples + "pd-quarter-impact.yaml", "--quiet", "--out",
-                                   out.string()};
+  std::vector<std::string> args = {
+      "run",      kExamples + "pd-quarter-impact.yaml", "--quiet", "--out", out.string(), "--set",
+      kLongRunEnd};
   args.insert(args.end(), kLongRunSets.begin(), kLongRunSets.end());
   return args;
 }
 
 // Runs the long case to its end in `whole`.
 void run_whole_long_case(const fs::path& whole) {
-  std::string args =
-      "run '" + kExamples + "pd-quarter-impact.yaml' --quiet --out '" + whole.string() + "'";
+  std::string args = "run '" + kExamples + "pd-quarter-impact.yaml' --quiet --out '" +
+                     whole.string() + "' --set " + kLongRunEnd;
   for (std::size_t k = 0; k < kLongRunSets.size(); k += 2) args += " --set " + kLongRunSets[k + 1];
   const auto r = run_coldspray(args);
   ASSERT_EQ(r.status, 0) << r.output;
@@ -285,7 +288,7 @@ TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
   const fs::path dir = make_temp_dir();
   const fs::path sweep = dir / "sweep";
   std::vector<std::string> args = {"sweep",  kExamples + "pd-quarter-impact.yaml",
-                                   "--vary", "solver.end_time=20ns,21ns,22ns",
+                                   "--vary", "solver.end_time=10ns,11ns,12ns",
                                    "--jobs", "1",
                                    "--out",  sweep.string()};
   args.insert(args.end(), kLongRunSets.begin(), kLongRunSets.end());
@@ -304,7 +307,7 @@ TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
   EXPECT_EQ(exit_status(pid), 130);
   EXPECT_EQ(untimed_summary(first)["status"], "interrupted");
   std::string again = "sweep '" + kExamples +
-                      "pd-quarter-impact.yaml' --vary solver.end_time=20ns,21ns,22ns --jobs 1 "
+                      "pd-quarter-impact.yaml' --vary solver.end_time=10ns,11ns,12ns --jobs 1 "
                       "--out '" +
                       sweep.string() + "'";
   for (std::size_t k = 0; k < kLongRunSets.size(); k += 2) again += " --set " + kLongRunSets[k + 1];
