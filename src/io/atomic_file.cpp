@@ -46,23 +46,28 @@ void require_replaceable(const fs::path& path, const std::string& where) {
                                kind_of(status.type())));
 }
 
-void write_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(const fs::path& path,
+                           const std::function<void(const fs::path&)>& write) {
   require_replaceable(path);
   const fs::path temporary = path.string() + fmt::format(".tmp{}", ::getpid());
   try {
-    {
-      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      if (!out) throw RunFault(fmt::format("cannot write '{}'", path.string()));
-      write(out);
-      out.flush();
-      if (!out) throw RunFault(fmt::format("writing '{}' failed", path.string()));
-    }
+    write(temporary);
     fs::rename(temporary, path);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     throw;
   }
+}
+
+void write_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  write_file_atomically(path, [&](const fs::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw RunFault(fmt::format("cannot write '{}'", path.string()));
+    write(out);
+    out.flush();
+    if (!out) throw RunFault(fmt::format("writing '{}' failed", path.string()));
+  });
 }
 
 }  // namespace coldspray::io

@@ -22,4 +22,9 @@ void require_replaceable(const std::filesystem::path& path, const std::string& w
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write);
 
+// The same for a file that a library writes by name (an HDF5 checkpoint): `write` is given the
+// temporary file's path.
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(const std::filesystem::path&)>& write);
+
 }  // namespace coldspray::io

@@ -1,7 +1,6 @@
 #include "run/checkpoints.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <vector>
@@ -10,6 +9,7 @@
 #include "checkpoint/archive.hpp"
 #include "checkpoint/fields.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 #include "mpm/departures.hpp"
 #include "run/run_folder.hpp"
@@ -51,8 +51,7 @@ fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
   const fs::path folder = rec.folder() / "checkpoints";
   fs::create_directories(folder);
   const fs::path path = folder / fmt::format("step_{:08d}.h5", s.step);
-  const fs::path temporary = path.string() + fmt::format(".tmp{}", ::getpid());
-  try {
+  io::write_file_atomically(path, [&](const fs::path& temporary) {
     io::Hdf5File file(temporary, io::Hdf5File::Mode::Create);
     checkpoint::CheckpointWriter writer(file);
     int format = kCheckpointFormat;
@@ -61,12 +60,7 @@ fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
     writer("solver", method);
     writer("case", text);
     all_fields(writer, s, rec, rule);
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw;
-  }
-  fs::rename(temporary, path);
+  });
   const std::vector<fs::path> kept = step_files(folder, ".h5");
   const auto keep = static_cast<std::size_t>(rec.checkpoints().keep());
   for (std::size_t k = 0; k + keep < kept.size(); ++k) fs::remove(kept[k]);
