@@ -6,8 +6,10 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 
 #include "case/case.hpp"
+#include "core/double4.hpp"
 #include "pd/families.hpp"
 #include "pd/neighbours.hpp"
 #include "pd/quadratic_fit.hpp"
@@ -100,28 +102,76 @@ struct Deformation {
   QuadraticMap velocity_fit;
 };
 
+// One lane of four doubles in all four (a register permute).
+template <int k>
+inline Double4 lane(Double4 a) {
+  using Index = long __attribute__((vector_size(32)));
+  return __builtin_shuffle(a, Index{k, k, k, k});
+}
+
+inline Double4 as_lanes(const Eigen::Vector4d& v) {
+  Double4 l;
+  std::memcpy(&l, v.data(), sizeof l);
+  return l;
+}
+
 // Eq 5, F = [sum omega Y (x) xi V_j] K^-1 with Y = y_j - y_i in the current positions, and
 // Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28). The same sum
 // over the bonds' monomials q gives the velocities' second-order fit Cdot = [sum omega
 // (v_j - v_i) (x) q V_j] M^-1; the first three monomials are xi / delta, so the sum of Fdot is
-// delta times its first columns. The sums run on padded columns, one register each.
+// delta times its first columns.
+//
+// The sums are kept by rows, four doubles to a register: row d of the first gains Y_d w s
+// (s = xi / delta), row d of the second V_d w q, q's first eight monomials (pd/quadratic_fit.hpp)
+// in two registers; the ninth monomial's column of all three rows takes one more. Ten
+// registers, every lane used, and q built with permutes; tested against the exact gradients of
+// a homogeneous deformation and against the fit of a quadratic field (pd_kinematics_test).
 inline Deformation deformation(const Families& fam, const Neighbours& N, const BondWeights& weights,
                                const Eigen::Matrix3d& K_inverse, const MomentMatrix& M_inverse,
                                std::size_t i) {
-  const double delta = weights.delta;
-  const Eigen::Vector4d y_i = N.position[i], v_i = N.velocity[i];
-  QuadraticMap VQ = QuadraticMap::Zero();
-  Eigen::Matrix<double, 4, 3> YX = Eigen::Matrix<double, 4, 3>::Zero();
+  using Index = long __attribute__((vector_size(32)));
+  const double delta = weights.delta, per_delta = 1.0 / delta;
+  const Double4 X_i = as_lanes(N.reference[i]), y_i = as_lanes(N.position[i]),
+                v_i = as_lanes(N.velocity[i]);
+  const Double4 zero = {0.0, 0.0, 0.0, 0.0};
+  Double4 ys[3] = {zero, zero, zero}, vq_low[3] = {zero, zero, zero},
+          vq_high[3] = {zero, zero, zero}, vq_last = zero;
   for_each_bond(fam, N, weights, i,
-                [&](std::size_t, std::size_t j, const Eigen::Vector3d& xi, double, double w) {
-                  const Eigen::Vector4d wY = w * (N.position[j] - y_i);
-                  const Eigen::Vector4d wV = w * (N.velocity[j] - v_i);
-                  const Monomials q = monomials(xi, delta);
-                  for (int k = 0; k < 9; ++k) VQ.col(k) += q[k] * wV;
-                  for (int k = 0; k < 3; ++k) YX.col(k) += xi[k] * wY;
+                [&](std::size_t, std::size_t j, const Eigen::Vector3d&, double, double w) {
+                  const Double4 s = (as_lanes(N.reference[j]) - X_i) * per_delta;  // s0 s1 s2 0
+                  const Double4 Y = as_lanes(N.position[j]) - y_i;
+                  const Double4 V = as_lanes(N.velocity[j]) - v_i;
+                  const Double4 ws = w * s;
+                  // w (s0, s1, s2, s0^2 / 2) and w (s1^2 / 2, s2^2 / 2, s0 s1, s0 s2); s's
+                  // fourth lane, 0, makes the first factor's (1, 1, 1, s0 / 2).
+                  const Double4 wq_low =
+                      __builtin_shuffle(ws, Index{0, 1, 2, 0}) *
+                      (__builtin_shuffle(s, Index{3, 3, 3, 0}) * Double4{0.0, 0.0, 0.0, 0.5} +
+                       Double4{1.0, 1.0, 1.0, 0.0});
+                  const Double4 wq_high = __builtin_shuffle(ws, Index{1, 2, 0, 0}) *
+                                          __builtin_shuffle(s, Index{1, 2, 1, 2}) *
+                                          Double4{0.5, 0.5, 1.0, 1.0};
+                  ys[0] += lane<0>(Y) * ws;
+                  ys[1] += lane<1>(Y) * ws;
+                  ys[2] += lane<2>(Y) * ws;
+                  const Double4 V0 = lane<0>(V), V1 = lane<1>(V), V2 = lane<2>(V);
+                  vq_low[0] += V0 * wq_low;
+                  vq_low[1] += V1 * wq_low;
+                  vq_low[2] += V2 * wq_low;
+                  vq_high[0] += V0 * wq_high;
+                  vq_high[1] += V1 * wq_high;
+                  vq_high[2] += V2 * wq_high;
+                  vq_last += (ws[1] * s[2]) * V;
                 });
-  return {YX.topRows<3>() * K_inverse, delta * VQ.topLeftCorner<3, 3>() * K_inverse,
-          VQ.lazyProduct(M_inverse)};
+  Eigen::Matrix3d YX;
+  QuadraticMap VQ;
+  for (int d = 0; d < 3; ++d) {
+    YX.row(d) << delta * ys[d][0], delta * ys[d][1], delta * ys[d][2];
+    VQ.row(d) << vq_low[d][0], vq_low[d][1], vq_low[d][2], vq_low[d][3], vq_high[d][0],
+        vq_high[d][1], vq_high[d][2], vq_high[d][3], vq_last[d];
+  }
+  VQ.row(3).setZero();
+  return {YX * K_inverse, delta * VQ.topLeftCorner<3, 3>() * K_inverse, VQ.lazyProduct(M_inverse)};
 }
 
 }  // namespace coldspray::pd

@@ -93,8 +93,9 @@ void visit_pairs(State& s, const BondWeights& weights, bool controlled, std::siz
         }
         e += s.dt * zdot.head<3>();
       }
-      control += w_ij / length * zdot;
-      if (real) s.pair_control[j] -= w_ji / length * zdot;
+      const double per_length = 1.0 / length;  // one division for both ends
+      control += (w_ij * per_length) * zdot;
+      if (real) s.pair_control[j] -= (w_ji * per_length) * zdot;
     }
     s.pair_bonds[i] += bonds;
     s.pair_control[i] += control;
