@@ -6,7 +6,6 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 
 #include "case/case.hpp"
 #include "core/double4.hpp"
@@ -102,19 +101,6 @@ struct Deformation {
   QuadraticMap velocity_fit;
 };
 
-// One lane of four doubles in all four (a register permute).
-template <int k>
-inline Double4 lane(Double4 a) {
-  using Index = long __attribute__((vector_size(32)));
-  return __builtin_shuffle(a, Index{k, k, k, k});
-}
-
-inline Double4 as_lanes(const Eigen::Vector4d& v) {
-  Double4 l;
-  std::memcpy(&l, v.data(), sizeof l);
-  return l;
-}
-
 // Eq 5, F = [sum omega Y (x) xi V_j] K^-1 with Y = y_j - y_i in the current positions, and
 // Fdot = [sum omega (v_j - v_i) (x) xi V_j] K^-1; then L = Fdot F^-1 (eq 28). The same sum
 // over the bonds' monomials q gives the velocities' second-order fit Cdot = [sum omega
@@ -129,7 +115,6 @@ inline Double4 as_lanes(const Eigen::Vector4d& v) {
 inline Deformation deformation(const Families& fam, const Neighbours& N, const BondWeights& weights,
                                const Eigen::Matrix3d& K_inverse, const MomentMatrix& M_inverse,
                                std::size_t i) {
-  using Index = long __attribute__((vector_size(32)));
   const double delta = weights.delta, per_delta = 1.0 / delta;
   const Double4 X_i = as_lanes(N.reference[i]), y_i = as_lanes(N.position[i]),
                 v_i = as_lanes(N.velocity[i]);
@@ -145,11 +130,11 @@ inline Deformation deformation(const Families& fam, const Neighbours& N, const B
                   // w (s0, s1, s2, s0^2 / 2) and w (s1^2 / 2, s2^2 / 2, s0 s1, s0 s2); s's
                   // fourth lane, 0, makes the first factor's (1, 1, 1, s0 / 2).
                   const Double4 wq_low =
-                      __builtin_shuffle(ws, Index{0, 1, 2, 0}) *
-                      (__builtin_shuffle(s, Index{3, 3, 3, 0}) * Double4{0.0, 0.0, 0.0, 0.5} +
+                      __builtin_shuffle(ws, Lanes4{0, 1, 2, 0}) *
+                      (__builtin_shuffle(s, Lanes4{3, 3, 3, 0}) * Double4{0.0, 0.0, 0.0, 0.5} +
                        Double4{1.0, 1.0, 1.0, 0.0});
-                  const Double4 wq_high = __builtin_shuffle(ws, Index{1, 2, 0, 0}) *
-                                          __builtin_shuffle(s, Index{1, 2, 1, 2}) *
+                  const Double4 wq_high = __builtin_shuffle(ws, Lanes4{1, 2, 0, 0}) *
+                                          __builtin_shuffle(s, Lanes4{1, 2, 1, 2}) *
                                           Double4{0.5, 0.5, 1.0, 1.0};
                   ys[0] += lane<0>(Y) * ws;
                   ys[1] += lane<1>(Y) * ws;
