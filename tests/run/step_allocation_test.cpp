@@ -154,11 +154,14 @@ TEST(StepAllocation, TheFaultChecksAllocateNothing) {
 }
 
 // With the elastic control and with the control along the flow (its pairs' histories and slip
-// fits are allocated at set-up).
+// fits are allocated at set-up); the quarter model, so that the step also mirrors its ghost points
+// across the symmetry planes.
 TEST(StepAllocation, ThePeridynamicsStepAllocatesNothingBetweenContactRebuilds) {
   for (const char* control : {"elastic", "flow"}) {
     const case_file::Case c =
-        example("pd-quarter-impact", {{"peridynamics.control_stiffness", control}});
+        example("pd-quarter-impact", {{"symmetry.x", "0 um"},
+                                      {"symmetry.y", "0 um"},
+                                      {"peridynamics.control_stiffness", control}});
     pd::State s = pd::build_state(c);
     const auto [counted, steps] = allocations_in_steps(
         s, c.solver.cfl, 20, 40, [](const pd::State& st) { return st.contact.builds; });
