@@ -159,9 +159,12 @@ struct Peridynamics {
   // bond's deformation, in units of the bond micromodulus 18 K / (pi delta^4).
   double stabilization = 0.1;
   ControlStiffness control_stiffness = ControlStiffness::Elastic;
-  // Points of different bodies closer than contact_distance x spacing repel with the short-range
-  // force of contact_stiffness x the micromodulus (Parks et al. 2008, as LAMMPS's PERI package).
-  double contact_distance = 0.9;
+  // Points of different bodies repel with the short-range force of contact_stiffness x the
+  // micromodulus once closer than d = min(contact_distance x the finer spacing,
+  // contact_initial_fraction x their distance at t = 0): LAMMPS's PERI package, d = min(0.9
+  // |X_i - X_j|, 1.35 lattice constants) and 15 (Parks et al. 2008, after Silling's EMU manual).
+  double contact_distance = 1.35;
+  double contact_initial_fraction = 0.9;
   double contact_stiffness = 15.0;
 
   friend bool operator==(const Peridynamics&, const Peridynamics&) = default;

@@ -169,7 +169,10 @@ void fields(IO& io, Peridynamics& p) {
   io.scalar("influence", p.influence, kInfluenceNames, kOptional);
   io.quantity("stabilization", p.stabilization, units::kDimensionless, kOptional, kNonNegative);
   io.scalar("control_stiffness", p.control_stiffness, kControlStiffnessNames, kOptional);
-  io.quantity("contact_distance", p.contact_distance, units::kDimensionless, kOptional, kFraction);
+  io.quantity("contact_distance", p.contact_distance, units::kDimensionless, kOptional,
+              Range{0.0, 3.0, true, false});
+  io.quantity("contact_initial_fraction", p.contact_initial_fraction, units::kDimensionless,
+              kOptional, kFraction);
   io.quantity("contact_stiffness", p.contact_stiffness, units::kDimensionless, kOptional,
               kNonNegative);
 }

@@ -3,10 +3,13 @@
 // Commun. 179 (2008) 777, as LAMMPS's PERI package implements it): a point pair closer than the
 // contact distance d pushes apart with force density
 //   f = k_c c (d - r) / delta V_j  along the line between them,
-// c = 18 K / (pi delta^4) the bond micromodulus. The pairs are found in the current
-// configuration with a cell list, kept with a skin and rebuilt once some point has moved half
-// the skin since the last build. Adhesive contact (the PD paper's models 1 and 2) will be
-// another force law on these same pairs.
+// c = 18 K / (pi delta^4) the bond micromodulus, d = min(1.35 h, 0.9 |X_i - X_j|) by default:
+// 1.35 spacings keeps points of one body out of the holes of another's lattice when it is
+// stretched (its largest hole, at a cube's centre, is 0.87 h from the corners at rest), and 0.9
+// of the initial distance lets bodies start closer than that without a push. The pairs are found in
+// the current configuration with a cell list, kept with a skin and rebuilt once some point has
+// moved half the skin since the last build. Adhesive contact (the PD paper's models 1 and 2) will
+// be another force law on these same pairs.
 #pragma once
 
 #include <array>
@@ -35,11 +38,12 @@ struct ContactList {
   void build(const Neighbours& N, double reach);
 };
 
-// The contact force law between points i and j (of different bodies): contact distance d,
-// constant k_c c / delta in N/m^7 (see above).
+// The contact force law between points i and j (of different bodies): contact distance
+// d = min(distance, initial_fraction |X_i - X_j|), constant k_c c / delta in N/m^7 (see above).
 struct ContactLaw {
-  double distance = 0.0;   // m
-  double stiffness = 0.0;  // k_c c / delta, N/m^7
+  double distance = 0.0;          // m
+  double initial_fraction = 0.0;  // of the pair's distance at t = 0
+  double stiffness = 0.0;         // k_c c / delta, N/m^7
 };
 
 }  // namespace coldspray::pd

@@ -16,7 +16,10 @@ Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
   const Eigen::Vector3d r = (N.position[i] - N.position[j]).head<3>();
   const double length = r.norm();
   if (length >= law.distance || length == 0.0) return Eigen::Vector3d::Zero();
-  return law.stiffness * (law.distance - length) * N.volume[j] / length * r;
+  const double d =
+      std::min(law.distance, law.initial_fraction * (N.reference[i] - N.reference[j]).norm());
+  if (length >= d) return Eigen::Vector3d::Zero();
+  return law.stiffness * (d - length) * N.volume[j] / length * r;
 }
 
 Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t j,

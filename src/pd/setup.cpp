@@ -63,7 +63,7 @@ ContactLaw contact_law(const State& s, std::size_t a, std::size_t b) {
                             s.bodies[b].material.elastic.bulk_modulus);
   const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
   return {s.settings.contact_distance * std::min(s.bodies[a].spacing, s.bodies[b].spacing),
-          s.settings.contact_stiffness * micromodulus / delta};
+          s.settings.contact_initial_fraction, s.settings.contact_stiffness * micromodulus / delta};
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path) 
   const bodies::Points& P = s.points;
   const std::size_t n = P.size();
   std::vector<std::int32_t> body(n), bonded_to(n);
-  std::vector<double> pressure(n), von_mises(n), density(n);
+  std::vector<double> pressure(n), von_mises(n), density(n), plastic_work(n);
   for (std::size_t p = 0; p < n; ++p) {
     body[p] = P.body[p];
     bonded_to[p] = static_cast<std::int32_t>(P.bonded_to[p]) - 1;  // -1: not bonded
@@ -18,6 +18,7 @@ void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path) 
     pressure[p] = materials::mean_pressure(sigma);
     von_mises[p] = materials::von_mises_stress(sigma);
     density[p] = s.bodies[P.body[p]].material.density / P.J[p];
+    plastic_work[p] = P.plastic_work[p] / P.volume0[p];
   }
   io::VtuPointCloud cloud(P.position);
   cloud.add_int("body", body);
@@ -27,6 +28,7 @@ void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path) 
   cloud.add_scalar("pressure", pressure);
   cloud.add_scalar("von_mises", von_mises);
   cloud.add_scalar("density", density);
+  cloud.add_scalar("plastic_work", plastic_work);  // per reference volume, J/m^3
   cloud.add_byte("surface", P.surface);
   cloud.add_scalar("bond", P.bond);
   cloud.add_int("bonded_to", bonded_to);
