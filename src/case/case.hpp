@@ -76,16 +76,19 @@ enum class ShapeFunction { Linear, Gimp };
 
 using materials::ArtificialViscosity;
 
-// The default time-step fraction of peridynamics: 0.7 of the bond-based bound (docs/pd.md,
-// "Time step"); the MPM's is Solver::cfl's.
-inline constexpr double kPeridynamicsCfl = 0.6;
+// The default time-step fraction of peridynamics: under half of the stable step measured on the
+// undeformed lattice, about 2.6 (docs/pd.md, "Time step"); the MPM's is Solver::cfl's.
+inline constexpr double kPeridynamicsCfl = 1.2;
+// The largest cfl a case may give: the MPM's bound is 1, peridynamics' about 2.6.
+inline constexpr double kMaxCfl = 3.0;
+inline constexpr double kMaxMpmCfl = 1.0;
 
 struct Solver {
   Method method = Method::Mpm;
   Geometry geometry = Geometry::ThreeD;
   ShapeFunction shape_function = ShapeFunction::Gimp;
   double end_time = 0.0;           // s
-  double cfl = 0.3;                // dt = cfl h / max(c + |v|); kPeridynamicsCfl for PD
+  double cfl = 0.3;                // dt = cfl h / max(c + |v|) (PD: pd/stepper.hpp)
   std::optional<double> dt_scale;  // alternative: fraction of the critical step (thesis §5.1.4)
   ArtificialViscosity artificial_viscosity;
   // Fourier heat conduction between points, with the materials' thermal_conductivity

@@ -128,7 +128,7 @@ void fields(IO& io, Solver& s) {
   io.scalar("geometry", s.geometry, kGeometryNames, kOptional);
   io.scalar("shape_function", s.shape_function, kShapeFunctionNames, kOptional);
   io.quantity("end_time", s.end_time, units::kTime, kRequired, kPositive);
-  io.quantity("cfl", s.cfl, units::kDimensionless, kOptional, kFraction);
+  io.quantity("cfl", s.cfl, units::kDimensionless, kOptional, Range{0.0, kMaxCfl, true, false});
   io.quantity("dt_scale", s.dt_scale, units::kDimensionless, kOptional, kFraction);
   io.section("artificial_viscosity", s.artificial_viscosity, kOptional);
   io.scalar("heat_conduction", s.heat_conduction, Flag{}, kOptional);

@@ -119,6 +119,7 @@ State build_state(const case_file::Case& c) {
   s.moment_inverse.assign(n, MomentMatrix::Zero());
   s.family_sums.assign(n, FamilySums{});
   s.deformation_gradient.assign(n, Eigen::Matrix3d::Identity());
+  s.compressed_stretch.assign(n, 1.0);
   s.piola_over_shape.assign(N.size(), PaddedTensor::Zero());
   s.velocity_fit.assign(N.size(), QuadraticMap::Zero());
   s.flow_direction.assign(N.size(), PaddedTensor::Zero());

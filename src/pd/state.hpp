@@ -75,6 +75,8 @@ struct State : bodies::Bodies {
   std::vector<MomentMatrix> moment_inverse;
   std::vector<FamilySums> family_sums;  // of the real points
   TensorField deformation_gradient;     // F (eq 5) of the last force evaluation, real points
+  // min(1, the smallest principal stretch of F) of the real points (pd/time_step.hpp).
+  std::vector<double> compressed_stretch;
   // Of the last force evaluation, of the real points and then the ghosts: A = P K^-1
   // (P = J (sigma - q I) F^-T, eq 7's P, Pa/m^5), the second-order fit Cdot of the velocities
   // (1/s), and what the control's stiffness along the flow needs (pd/control_scale.hpp): the

@@ -16,6 +16,7 @@
 #include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
+#include "pd/time_step.hpp"
 
 namespace coldspray::pd {
 
@@ -53,7 +54,8 @@ void drift(State& s) {
 // Eqs 5, 28-31 at every point: F and L = Fdot F^-1 from the family, then the materials' update
 // (the MPM's, bodies/update_points.hpp), A = P K^-1 with P = J (sigma - q I) F^-T and, for the
 // control along the flow, the point's flow direction and softening (pd/control_along_flow.hpp).
-// Returns the largest c + |v|.
+// Returns the largest (c + |v|) / lambda, lambda the point's compressed stretch
+// (pd/time_step.hpp): the speed at which a signal crosses the reference lattice.
 double update_stress(State& s) {
   bodies::Points& P = s.points;
   const double dt = s.dt;
@@ -67,6 +69,7 @@ double update_stress(State& s) {
         const Deformation def = deformation(s.families, s.neighbours, weights,
                                             tensor_at(s.shape_inverse, i), s.moment_inverse[i], i);
         store_tensor(def.F, s.deformation_gradient, i);
+        s.compressed_stretch[i] = compressed_stretch(def.F);
         s.velocity_fit[i] = def.velocity_fit;
         materials::StepKinematics k;
         k.set_velocity_gradient(def.Fdot * def.F.inverse(), dt);  // eqs 28-29
@@ -103,11 +106,17 @@ double update_stress(State& s) {
           bodies::record_fault(s.fault, i, "non-finite stress or temperature");
       };
       const std::size_t batches = bodies::batch_count(body);
-#pragma omp parallel for schedule(static) reduction(max : max_speed)
+#pragma omp parallel for schedule(static)
       for (std::size_t batch = 0; batch < batches; ++batch)
-        max_speed = std::max(max_speed, bodies::update_batches(models, P, body, batch, batch + 1,
-                                                               kinematics_of, complete_point));
+        bodies::update_batches(models, P, body, batch, batch + 1, kinematics_of, complete_point);
     });
+#pragma omp parallel for schedule(static) reduction(max : max_speed)
+    for (std::size_t i = body.begin; i < body.end; ++i) {
+      const double speed =
+          std::sqrt(P.velocity[0][i] * P.velocity[0][i] + P.velocity[1][i] * P.velocity[1][i] +
+                    P.velocity[2][i] * P.velocity[2][i]);
+      max_speed = std::max(max_speed, (P.sound_speed[i] + speed) / s.compressed_stretch[i]);
+    }
   }
   return max_speed;
 }

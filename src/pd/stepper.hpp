@@ -5,9 +5,9 @@
 
 namespace coldspray::pd {
 
-// cfl h / max(c + |v|), h the smallest body spacing: the bound of an explicit scheme on a
-// lattice of spacing h whose stiffness is the continuum's (correspondence PD reproduces the
-// local elastic moduli; docs/pd.md, "Time step").
+// cfl h / max((c + |v|) / lambda), h the smallest body spacing and lambda a point's compressed
+// stretch (pd/time_step.hpp): the bound of an explicit scheme on the lattice as deformed
+// (docs/pd.md, "Time step").
 double stable_time_step(const State& s, double cfl);
 
 // Advances the state by s.dt. Throws RunFault (body, point, time, cause) when a point's state

@@ -66,7 +66,8 @@ TEST(InputErrors, MissingRequiredKeyPointsAtItsMap) {
 TEST(InputErrors, NonPhysicalValues) {
   expect_error({"negative-radius.yaml", "6:57", "bodies.particle.shape.radius",
                 "must be > 0, got '-7 um' (-7e-06 m)"});
-  expect_error({"cfl-too-large.yaml", "12:8", "solver.cfl", "must be in (0, 1], got '1.5'"});
+  expect_error({"cfl-too-large.yaml", "12:8", "solver.cfl",
+                "must be in (0, 1] with solver.method mpm, got '1.5'"});
   expect_error({"bad-poisson.yaml", "6:54", "materials.rubbery.elastic.poisson_ratio",
                 "must be in (-1, 0.5), got '0.5'"});
   expect_error({"grid-min-max.yaml", "11:8", "grid.max", "must be greater than min in x and z"});
@@ -85,7 +86,8 @@ TEST(InputErrors, NonPhysicalValuesGivenByOverride) {
       {"bodies.particle.spacing=-1 um", "bodies.particle.spacing", "must be > 0"},
       {"bodies.particle.temperature=0 K", "bodies.particle.temperature", "must be > 0"},
       {"materials.m.taylor_quinney=1.2", "materials.m.taylor_quinney", "must be in [0, 1]"},
-      {"solver.cfl=0", "solver.cfl", "must be in (0, 1]"},
+      {"solver.cfl=0", "solver.cfl", "must be in (0, 3]"},
+      {"solver.cfl=1.5", "solver.cfl", "must be in (0, 1] with solver.method mpm"},
       {"solver.end_time=-1 ns", "solver.end_time", "must be > 0"},
       {"output.history_interval=-1 ns", "output.history_interval", "must be >= 0"},
       {"contact.friction=-0.1", "contact.friction", "must be >= 0"},

@@ -94,7 +94,7 @@ TEST(SolverSections, ACaseWithBothSectionsRunsOnEither) {
 // Each solver has its own default time-step fraction (docs/pd.md, "Time step"); a given one,
 // in the file or by --set, is kept.
 TEST(SolverSections, TheDefaultTimeStepFractionIsTheSolvers) {
-  EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml")).solver.cfl, 0.6);
+  EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml")).solver.cfl, 1.2);
   EXPECT_EQ(load_case(example("verification/sliding-impact-3d.yaml")).solver.cfl, 0.3);
   EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml"), {{"solver.cfl", "0.3"}})
                 .solver.cfl,
@@ -103,6 +103,27 @@ TEST(SolverSections, TheDefaultTimeStepFractionIsTheSolvers) {
                       {{"solver.method", "peridynamics"}, {"solver.geometry", "3d"}})
                 .solver.cfl,
             0.3);  // the file's own cfl: 0.3
+}
+
+// Peridynamics' stable step is about 2.6 h / c (docs/pd.md, "Time step"), the MPM's h / c: a
+// cfl above 1 is for peridynamics only, and 3 is the most either takes.
+TEST(SolverSections, ACflAboveOneIsPeridynamicsOnly) {
+  EXPECT_EQ(load_case(example("verification/pd-elastic-spheres.yaml"), {{"solver.cfl", "2.5"}})
+                .solver.cfl,
+            2.5);
+  const auto error_of = [](const char* file, const char* cfl) {
+    try {
+      load_case(example(file), {{"solver.cfl", cfl}});
+    } catch (const InputError& e) {
+      return std::string(e.key()) + ": " + e.message();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("verification/pd-elastic-spheres.yaml", "3.5"),
+            "solver.cfl: must be in (0, 3], got '3.5'");
+  EXPECT_EQ(error_of("verification/sliding-impact-3d.yaml", "1.5"),
+            "solver.cfl: must be in (0, 1] with solver.method mpm, got '1.5' (the explicit MPM's "
+            "bound is 1)");
 }
 
 }  // namespace

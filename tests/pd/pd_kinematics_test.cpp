@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 #include <string>
@@ -21,6 +22,7 @@
 #include "pd/stepper.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
+#include "pd/time_step.hpp"
 
 namespace coldspray::pd {
 namespace {
@@ -331,6 +333,35 @@ TEST(PeridynamicHolds, TheKineticEnergyAHoldTakesIsBooked) {
   // Unbooked, the budget would be off by the whole held_kinetic; what remains (3 % of it) is
   // the time integration's error after the sudden stop.
   EXPECT_NEAR(after.total(), before.total(), 0.1 * held_kinetic);
+}
+
+// The smallest principal stretch, whatever the rotations around it; a stretched point counts
+// at 1 (pd/time_step.hpp).
+TEST(PeridynamicTimeStep, TheCompressedStretchIsTheSmallestPrincipalOne) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).matrix();
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(-1.1, Eigen::Vector3d(3, -1, 2).normalized()).matrix();
+  EXPECT_NEAR(compressed_stretch(R * Eigen::Vector3d(0.2, 1.5, 3.0).asDiagonal() * Q.transpose()),
+              0.2, 1e-12);
+  EXPECT_NEAR(compressed_stretch(R * Eigen::Vector3d(2.4, 0.13, 3.1).asDiagonal()), 0.13, 1e-12);
+  EXPECT_EQ(compressed_stretch(Eigen::Vector3d(1.2, 1.1, 1.3).asDiagonal() * Q), 1.0);
+  EXPECT_EQ(compressed_stretch(Eigen::Matrix3d::Identity()), 1.0);
+}
+
+// A block at rest, deformed homogeneously to principal stretches 0.5, 2 and 1 (J = 1, so its
+// density and wave speed c = sqrt((K + 4G/3) / rho) = 6118.3 m/s are those at rest): after a
+// step, the time step is cfl times the deformed spacing 0.5 h over c (docs/pd.md, "Time step").
+TEST(PeridynamicTimeStep, FollowsTheSmallestStretchOfTheDeformation) {
+  State s = block();
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -1, 2).normalized()).matrix();
+  deform(s, R * Eigen::Vector3d(0.5, 2.0, 1.0).asDiagonal(), Eigen::Matrix3d::Zero());
+  const double c = std::sqrt((66.4e9 + 4.0 / 3.0 * 26e9) / 2700.0);
+  EXPECT_NEAR(stable_time_step(s, 1.2), 1.2 * 0.25e-6 / c, 1e-12 * 0.25e-6 / c);  // at rest
+  s.dt = 1e-15;
+  step(s);
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    ASSERT_NEAR(s.compressed_stretch[i], 0.5, 1e-12) << "point " << i;
+  EXPECT_NEAR(stable_time_step(s, 1.2), 1.2 * 0.5 * 0.25e-6 / c, 1e-9 * 0.25e-6 / c);
 }
 
 }  // namespace

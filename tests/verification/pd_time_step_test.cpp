@@ -1,7 +1,11 @@
-// Peridynamics' default time-step fraction, cfl 0.6 (docs/pd.md, "Time step"), gives the same
-// impact as the MPM's 0.3 in half the steps: the PD paper's Cu on Cu at 500 m/s, coarse
-// (examples/verification/pd-quarter-impact.yaml), rebound and crater within 0.5 % (measured
-// 0.24 % and 0.1 %), the energy budget within 0.5 %.
+// Peridynamics' time step follows the deformed lattice (docs/pd.md, "Time step"): dt = cfl h
+// lambda / (c + |v|), lambda a point's smallest principal stretch. On the PD paper's Cu on Cu at
+// 500 m/s, coarse (examples/verification/pd-quarter-impact.yaml):
+// - the default, cfl 1.2, gives the impact of cfl 0.3 (rebound and crater within 0.5 %, measured
+//   0.02 % and 0.1 %) with the energy budget within 0.5 %;
+// - cfl 2 runs to the end with the budget within the 2 % asked of every verification run
+//   (measured 1.4 %, rebound 113.05 m/s): with h alone in place of lambda h it faulted at 7.1 ns,
+//   once the particle's south pole was compressed to lambda = 0.5 (measured).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,17 +22,27 @@ TEST(Verification, PeridynamicDefaultTimeStepGivesTheFineStepsImpact) {
   const auto& c = coarse.summary.bodies;
   const auto& f = fine.summary.bodies;
   std::printf(
-      "pd time step: cfl 0.6 / 0.3: steps %ld / %ld, particle v_z %.6g / %.6g m/s, crater "
+      "pd time step: cfl 1.2 / 0.3: steps %ld / %ld, particle v_z %.6g / %.6g m/s, crater "
       "%.6g / %.6g um, energy error %.2e / %.2e\n",
       coarse.summary.steps, fine.summary.steps, c[0].velocity[2], f[0].velocity[2],
       c[1].impact.crater_depth * 1e6, f[1].impact.crater_depth * 1e6,
       coarse.summary.energy_relative_error(), fine.summary.energy_relative_error());
   EXPECT_GT(f[0].velocity[2], 100.0);  // it rebounds
   EXPECT_LT(static_cast<double>(coarse.summary.steps),
-            0.55 * static_cast<double>(fine.summary.steps));
+            0.5 * static_cast<double>(fine.summary.steps));
   EXPECT_NEAR(c[0].velocity[2], f[0].velocity[2], 5e-3 * f[0].velocity[2]);
   EXPECT_NEAR(c[1].impact.crater_depth, f[1].impact.crater_depth, 5e-3 * f[1].impact.crater_depth);
   EXPECT_LT(std::abs(coarse.summary.energy_relative_error()), 5e-3);
+}
+
+TEST(Verification, PeridynamicTimeStepFollowsTheCompression) {
+  const CaseRun run = run_verification_case("pd-quarter-impact", {{"solver.cfl", "2"}});
+  std::printf("pd time step: cfl 2: %ld steps, particle v_z %.6g m/s, energy error %.2e\n",
+              run.summary.steps, run.summary.bodies[0].velocity[2],
+              run.summary.energy_relative_error());
+  EXPECT_EQ(run.summary.status, "ok");
+  EXPECT_LT(std::abs(run.summary.energy_relative_error()), 2e-2);
+  EXPECT_GT(run.summary.bodies[0].velocity[2], 100.0);
 }
 
 }  // namespace

@@ -1,0 +1,26 @@
+// The length that sets peridynamics' time step (docs/pd.md, "Time step"). The discretisation is
+// total Lagrangian: bonds keep their reference vectors xi, so a signal that runs at c through the
+// current configuration runs at c / lambda through the reference one, lambda the stretch along its
+// path, and crosses a reference spacing h in lambda h / c. The critical step of an explicit
+// total-Lagrangian discretisation is therefore set by the current length, not the initial one
+// (Belytschko, Liu, Moran and Elkhodary, Nonlinear Finite Elements for Continua and Structures,
+// 2nd ed., Wiley 2014, ch. 6). A point counts with the smallest principal stretch of its F
+// (eq 5); a stretched one (lambda > 1) counts at h, since the control's and the contact's
+// stiffnesses, fixed in the reference configuration, do not soften with it.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace coldspray::pd {
+
+// min(1, lambda_min), lambda_min^2 the smallest eigenvalue of C = F^T F.
+inline double compressed_stretch(const Eigen::Matrix3d& F) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  return std::min(1.0, std::sqrt(std::max(0.0, eigen.eigenvalues()[0])));
+}
+
+}  // namespace coldspray::pd
