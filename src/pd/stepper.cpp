@@ -104,6 +104,10 @@ double update_stress(State& s) {
           bodies::record_fault(s.fault, i, "inverted deformation gradient (det F <= 0)");
         else if (!A.allFinite() || !std::isfinite(state.temperature))
           bodies::record_fault(s.fault, i, "non-finite stress or temperature");
+        else if (s.compressed_stretch[i] < kCrushedStretch)
+          bodies::record_fault(s.fault, i,
+                               "crushed: the smallest principal stretch of F is below 0.01, and "
+                               "the time step, which follows it, would stall the run");
       };
       const std::size_t batches = bodies::batch_count(body);
 #pragma omp parallel for schedule(static)

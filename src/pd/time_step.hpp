@@ -16,6 +16,10 @@
 
 namespace coldspray::pd {
 
+// A point crushed below this stretch stops the run (exit 3, with the point): the step, which
+// follows it, would fall a hundredfold and the run stall, where det F <= 0 is a fault already.
+inline constexpr double kCrushedStretch = 0.01;
+
 // min(1, lambda_min), lambda_min^2 the smallest eigenvalue of C = F^T F.
 inline double compressed_stretch(const Eigen::Matrix3d& F) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;

@@ -364,5 +364,21 @@ TEST(PeridynamicTimeStep, FollowsTheSmallestStretchOfTheDeformation) {
   EXPECT_NEAR(stable_time_step(s, 1.2), 1.2 * 0.5 * 0.25e-6 / c, 1e-9 * 0.25e-6 / c);
 }
 
+// A point crushed to a stretch below 0.01 stops the run with its name, rather than stalling it
+// on a step a hundredth of the undeformed one.
+TEST(PeridynamicTimeStep, ACrushedPointIsAFault) {
+  State s = block();
+  deform(s, Eigen::Vector3d(1.0, 0.009, 1.0).asDiagonal(), Eigen::Matrix3d::Zero());
+  s.dt = 1e-15;
+  try {
+    step(s);
+    FAIL() << "no fault";
+  } catch (const RunFault& e) {
+    EXPECT_NE(std::string(e.what()).find("smallest principal stretch of F is below 0.01"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace coldspray::pd
