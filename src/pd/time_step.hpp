@@ -20,10 +20,19 @@ namespace coldspray::pd {
 // follows it, would fall a hundredfold and the run stall, where det F <= 0 is a fault already.
 inline constexpr double kCrushedStretch = 0.01;
 
-// min(1, lambda_min), lambda_min^2 the smallest eigenvalue of C = F^T F.
+// Below this distance |C - I| (Frobenius) a point is counted at Weyl's lower bound instead of its
+// exact stretch: at most 2.5 % short of it, and without the eigen-solve that took 8 % of a D/25
+// impact step (most points of an impact are nearly undeformed; measured A/B, 2 threads).
+inline constexpr double kNearlyUndeformed = 0.05;
+
+// min(1, lambda_min), lambda_min^2 the smallest eigenvalue of C = F^T F; near C = I a lower bound
+// of it: every eigenvalue of C = I + E lies within |E|_2 <= |E|_F of 1 (Weyl's inequality).
 inline double compressed_stretch(const Eigen::Matrix3d& F) {
+  const Eigen::Matrix3d C = F.transpose() * F;
+  const double distance = (C - Eigen::Matrix3d::Identity()).norm();
+  if (distance < kNearlyUndeformed) return std::sqrt(1.0 - distance);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  eigen.computeDirect(C, Eigen::EigenvaluesOnly);
   return std::min(1.0, std::sqrt(std::max(0.0, eigen.eigenvalues()[0])));
 }
 

@@ -346,6 +346,13 @@ TEST(PeridynamicTimeStep, TheCompressedStretchIsTheSmallestPrincipalOne) {
   EXPECT_NEAR(compressed_stretch(R * Eigen::Vector3d(2.4, 0.13, 3.1).asDiagonal()), 0.13, 1e-12);
   EXPECT_EQ(compressed_stretch(Eigen::Vector3d(1.2, 1.1, 1.3).asDiagonal() * Q), 1.0);
   EXPECT_EQ(compressed_stretch(Eigen::Matrix3d::Identity()), 1.0);
+  // Nearly undeformed: Weyl's lower bound, no more than 2.5 % short. Here C - I has eigenvalues
+  // 0.999^2 - 1, 1.002^2 - 1 and 0, so the bound is sqrt(1 - |C - I|_F).
+  const double near = compressed_stretch(R * Eigen::Vector3d(0.999, 1.002, 1.0).asDiagonal() * Q);
+  const double distance = std::hypot(0.999 * 0.999 - 1.0, 1.002 * 1.002 - 1.0);
+  EXPECT_NEAR(near, std::sqrt(1.0 - distance), 1e-12);
+  EXPECT_LT(near, 0.999);
+  EXPECT_GT(near, 0.975 * 0.999);
 }
 
 // A block at rest, deformed homogeneously to principal stretches 0.5, 2 and 1 (J = 1, so its
