@@ -2,10 +2,9 @@
 // pd/control_along_flow.hpp) on the PD paper's Cu on Cu at 500 m/s, coarse, quarter model
 // (examples/verification/pd-quarter-impact.yaml), with the bulk viscosity off so that the
 // budget's viscous entry is the control's work alone:
-// - the answer does not depend on the step: cfl 1.2 (the default) and 0.3 give the rebound and the
-// crater
-//   within 1 % (measured 0.2 % and 0.5 %; a first form, with the tangent's algorithmic slope,
-//   moved the rebound from 3.5 to 26.8 m/s);
+// - the answer does not depend on the step: cfl 1.2 (the default) and 0.3 give the rebound and
+//   the crater within 1 % (measured 0.3 % and 0.4 %; a first form, with the tangent's algorithmic
+//   slope, moved the rebound from 3.5 to 26.8 m/s);
 // - the control takes energy and gives back no more than it took: its work on the bodies is
 //   negative at both steps (a form that softened every increment, with no pair history, did
 //   +1.9e-8 J of work on them, 12 % of the impact energy), and the budget closes within 0.5 %.
