@@ -5,8 +5,8 @@
 DIR/snapshots.pvd, DIR/snapshots/step_XXXXXXXX.vtu and DIR/case.resolved.yaml.
 This tool reads them and writes PNG figures:
 
-  section DIR --times 10ns,40ns,80ns --field eqps --out eqps.png
-      cross-sections of the bodies coloured by a point field, one panel per time;
+  section DIR [DIR2 ...] --times 10ns,40ns,80ns --field eqps --out eqps.png
+      cross-sections of the bodies coloured by a point field, one panel per run and time;
   history DIR [DIR2 ...] --columns cor,v_rest --body particle --out history.png
       history.csv columns against time, several runs overlaid;
   info DIR
@@ -545,21 +545,22 @@ def panel_grid(fig_rows, fig_columns, width, height):
     return fig, axes, bars
 
 
-def section_figure(case, snapshots, sections, fields, options):
-    """Rows = fields, columns = times; one colour bar per row."""
+def section_figure(panels, fields, options):
+    """Rows = fields, columns = panels (one per run and time); one colour bar per row.
+    Each panel is (case, title, section)."""
+    sections = [section for _, _, section in panels]
     limits = plot_limits(sections, options.xlim, options.ylim)
     ranges = colour_ranges(fields, sections, options.ranges)
     aspect = (limits[1][1] - limits[1][0]) / (limits[0][1] - limits[0][0])
     width = options.panel_width
-    fig, axes, bars = panel_grid(len(fields), len(sections), width, width * aspect)
-    horizontal = "r" if case.axisymmetric else "x"
+    fig, axes, bars = panel_grid(len(fields), len(panels), width, width * aspect)
     for row, field in enumerate(fields):
         norm = matplotlib.colors.Normalize(*ranges[field])
-        for column, (section, (time, _)) in enumerate(zip(sections, snapshots)):
+        for column, (case, title, section) in enumerate(panels):
             ax = axes[row][column]
             mappable = draw_panel(ax, section, field, limits, norm, options.cmap)
-            ax.set_title(f"t = {time * SECOND_TO_NS:.4g} ns")
-            ax.set_xlabel(f"{horizontal} (\u00b5m)")
+            ax.set_title(title)
+            ax.set_xlabel(f"{'r' if case.axisymmetric else 'x'} (\u00b5m)")
             if column == 0:
                 ax.set_ylabel("z (\u00b5m)")
             else:
@@ -578,9 +579,22 @@ def body_ids_for(case, names):
     return [case.body_names.index(n) for n in names]
 
 
-def command_section(options):
-    folder = require_dir(options.dir)
+def run_sections(folder, times, fields, options):
+    """The run's case and its sections at the given times."""
+    folder = require_dir(folder)
     case = CaseInfo(os.path.join(folder, "case.resolved.yaml"))
+    body_ids = body_ids_for(case, split_list(options.bodies))
+    pvd = os.path.join(folder, "snapshots.pvd")
+    snapshots = pick_snapshots(read_pvd(pvd), times, pvd)
+    reference = read_vtu(read_pvd(pvd)[0][1]) if options.cut == "material" else None
+    sections = []
+    for time, path in snapshots:
+        data = read_vtu(path)
+        sections.append((time, make_section(data, case, body_ids, fields, path, reference)))
+    return case, sections
+
+
+def command_section(options):
     fields = split_list(options.field) or ["eqps"]
     options.ranges = match_ranges(fields, options.range)
     options.xlim = parse_range(options.xlim, "--xlim") if options.xlim else None
@@ -590,17 +604,16 @@ def command_section(options):
     times = [(text, parse_time(text)) for text in split_list(options.times)]
     if not times:
         raise PlotError("--times: give at least one time")
-    body_ids = body_ids_for(case, split_list(options.bodies))
     if options.cmap not in matplotlib.colormaps:
         raise PlotError(f"--cmap {options.cmap}: not a matplotlib colour map")
-    pvd = os.path.join(folder, "snapshots.pvd")
-    snapshots = pick_snapshots(read_pvd(pvd), times, pvd)
-    reference = read_vtu(read_pvd(pvd)[0][1]) if options.cut == "material" else None
-    sections = []
-    for _, path in snapshots:
-        data = read_vtu(path)
-        sections.append(make_section(data, case, body_ids, fields, path, reference))
-    fig = section_figure(case, snapshots, sections, fields, options)
+    labels = run_labels(options.dir, options.labels)
+    panels = []
+    for folder, label in zip(options.dir, labels):
+        case, sections = run_sections(folder, times, fields, options)
+        for time, section in sections:
+            title = f"t = {time * SECOND_TO_NS:.4g} ns"
+            panels.append((case, f"{label}, {title}" if len(options.dir) > 1 else title, section))
+    fig = section_figure(panels, fields, options)
     save_figure(fig, options.out, options.dpi)
 
 
@@ -871,7 +884,8 @@ def build_parser():
     commands = parser.add_subparsers(dest="command", required=True)
 
     section = commands.add_parser("section", help="cross-sections coloured by a point field")
-    section.add_argument("dir", help="run output folder")
+    section.add_argument("dir", nargs="+", help="run output folders (panels side by side)")
+    section.add_argument("--labels", help="comma-separated run labels (default: folder names)")
     section.add_argument("--times", action="append", required=True,
                          help="times, comma-separated: 10ns,40ns or 8e-8 (seconds) or 0.08us")
     section.add_argument("--field", action="append",

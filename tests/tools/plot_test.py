@@ -291,6 +291,28 @@ class PlotToolTest(unittest.TestCase):
                                "--bodies", "particle", "--out", path)
         self.assert_png(result, path)
 
+    def test_sections_of_two_runs_stand_side_by_side(self):
+        options = self.tool.build_parser().parse_args(
+            ["section", self.rz, self.xyz, "--times", "10ns,20ns", "--labels", "MPM,PD",
+             "--out", self.out("unused.png")])
+        figures = []
+        original = self.tool.save_figure
+        self.tool.save_figure = lambda fig, out, dpi: figures.append(fig)
+        try:
+            options.run(options)
+        finally:
+            self.tool.save_figure = original
+        panels = [ax for ax in figures[0].axes if ax.get_title()]
+        self.assertEqual([ax.get_title() for ax in panels],
+                         ["MPM, t = 10 ns", "MPM, t = 20 ns", "PD, t = 10 ns", "PD, t = 20 ns"])
+        self.assertEqual([ax.get_xlabel()[0] for ax in panels], ["r", "r", "x", "x"])
+
+    def test_sections_with_too_few_labels_fail_without_a_png(self):
+        path = self.out("labels.png")
+        result = self.run_tool("section", self.rz, self.xyz, "--times", "10ns", "--labels", "MPM",
+                               "--out", path)
+        self.assert_failed_without_png(result, path, "--labels")
+
     def test_history_overlays_runs(self):
         path = self.out("history.png")
         result = self.run_tool("history", self.rz, self.xyz, "--columns", "cor,mean_eqps,kinetic",
