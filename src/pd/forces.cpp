@@ -43,7 +43,7 @@ ForceDensity force_density(const State& s, std::size_t i) {
   const std::size_t b = N.body[i];
   const BondWeights weights = bond_weights(s, b);
   const double delta = weights.delta;
-  const double control = s.settings.stabilization * s.body_bonds[b].micromodulus;
+  const double control = s.body_bonds[b].control;
   const bool along_flow = control != 0.0 && !s.control_displacement.empty();
   const Eigen::Vector4d y_i = N.position[i], v_i = N.velocity[i];
   // The term of eq 8 that holds only i's A, from the family's fixed sum.
@@ -51,7 +51,7 @@ ForceDensity force_density(const State& s, std::size_t i) {
   Eigen::Vector4d stabilising = Eigen::Vector4d::Zero();
   for_each_bond(
       s.families, N, weights, i,
-      [&](std::size_t bond, std::size_t j, const Eigen::Vector3d& xi, double length, double w) {
+      [&](std::size_t bond, std::size_t j, const Eigen::Vector3d& xi, double /*|xi|*/, double w) {
         // T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi (eq 7); the A_i part is above.
         const PaddedTensor& A_j = s.piola_over_shape[j];
         bonds += w * (xi[0] * A_j.col(0) + xi[1] * A_j.col(1) + xi[2] * A_j.col(2));
@@ -72,7 +72,7 @@ ForceDensity force_density(const State& s, std::size_t i) {
                   softened_part(s.flow_direction[j], s.flow_softening[j], Y, zdot_j, e);
           zdot += s.slip_fit[i] * q - s.slip_fit[j] * reversed(q);
         }
-        stabilising += w / length * zdot;
+        stabilising += w * zdot;
       });
   stabilising *= control;
   return {bonds.head<3>(), stabilising.head<3>(), contact_density(s, i)};

@@ -18,10 +18,11 @@ struct ForceDensity {
 };
 
 // Eq 8 at point i: sum over its family of T[x_i]<xi> - T[x_j]<-xi> = omega (A_i + A_j) xi V_j.
-// The control, Silling's penalty G_s c / |xi| omega (z_i + z_j) V_j on the non-uniform parts
+// The control, Silling's penalty G_s c / l omega (z_i + z_j) V_j on the non-uniform parts
 // z = Y - C q(xi) of the bond seen from either end (C each end's second-order fit of the
 // positions, pd/quadratic_fit.hpp), is zero under any deformation up to quadratic order, at
-// surfaces too. Its rate is given here, G_s c / |xi| omega (P_i zdot_i + P_j zdot_j) V_j with
+// surfaces too; weighed by c / l (pd/control_length.hpp), not Silling's c / |xi|, it derives from
+// a stored energy. Its rate is given here, G_s c / l omega (P_i zdot_i + P_j zdot_j) V_j with
 // zdot = (v_j - v_i) - Cdot q(xi) and P = I less the part each end's flow softens (identity for
 // the elastic control and where the point did not flow; pd/control_along_flow.hpp). The step
 // accumulates it (pd/stepper.cpp): with P = I the sum is Silling's penalty on the current

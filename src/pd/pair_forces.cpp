@@ -31,11 +31,11 @@ PairSchedule pair_schedule(const Families& fam, std::size_t real) {
 namespace {
 
 // The pairs (i, j > i) of the points [first, end): eq 8's omega (A_i + A_j) xi beta V and the
-// control's rate c / |xi| omega beta V zdot, zdot = zdot_i + zdot_j less the parts the flow
+// control's rate omega beta V zdot, zdot = zdot_i + zdot_j less the parts the flow
 // softens (pd/forces.hpp), i's part of each pair to i and j's to j (real j only). With the
 // control along the flow each pair's penalty displacement e advances by dt zdot. The part of
 // eq 8 that holds only the point's own A is added apart (pair_forces), as is the control's
-// factor G_s c.
+// factor G_s c / l (pd/control_length.hpp).
 template <case_file::Influence kind, bool along_flow>
 void visit_pairs(State& s, const BondWeights& weights, bool controlled, std::size_t first,
                  std::size_t end) {
@@ -93,9 +93,8 @@ void visit_pairs(State& s, const BondWeights& weights, bool controlled, std::siz
         }
         e += s.dt * zdot.head<3>();
       }
-      const double per_length = 1.0 / length;  // one division for both ends
-      control += (w_ij * per_length) * zdot;
-      if (real) s.pair_control[j] -= (w_ji * per_length) * zdot;
+      control += w_ij * zdot;
+      if (real) s.pair_control[j] -= w_ji * zdot;
     }
     s.pair_bonds[i] += bonds;
     s.pair_control[i] += control;
@@ -128,8 +127,8 @@ void visit_slip_pairs(State& s, const BondWeights& weights, std::size_t first, s
       const Monomials q = monomials(xi, delta);
       const Eigen::Vector4d kappa = D_i * q - D_j * reversed(q);
       s.control_displacement[s.pairs.pair(i, b)] += s.dt * kappa.head<3>();
-      control += omega_beta * N.volume[j] / length * kappa;
-      if (j < N.real) s.pair_control[j] -= omega_beta * V_i / length * kappa;
+      control += omega_beta * N.volume[j] * kappa;
+      if (j < N.real) s.pair_control[j] -= omega_beta * V_i * kappa;
     }
     s.pair_control[i] += control;
   }
@@ -199,7 +198,7 @@ void pair_forces(State& s) {
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    s.pair_control[i] *= s.settings.stabilization * s.body_bonds[s.neighbours.body[i]].micromodulus;
+    s.pair_control[i] *= s.body_bonds[s.neighbours.body[i]].control;
 }
 
 }  // namespace coldspray::pd

@@ -11,6 +11,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "case/key_locations.hpp"
 #include "core/error.hpp"
+#include "pd/control_length.hpp"
 #include "pd/deformation.hpp"
 #include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
@@ -102,7 +103,9 @@ State build_state(const case_file::Case& c) {
   for (const bodies::BodyRange& body : s.bodies) {
     const double delta = s.settings.horizon_factor * body.spacing;
     const double K = body.material.elastic.bulk_modulus;
-    s.body_bonds.push_back({delta, 18.0 * K / (std::numbers::pi * std::pow(delta, 4))});
+    const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
+    const double l = control_length(s.settings.influence, delta, body.spacing);
+    s.body_bonds.push_back({delta, micromodulus, s.settings.stabilization * micromodulus / l});
     horizons.push_back(delta);
     s.min_spacing = std::min(s.min_spacing, body.spacing);
   }

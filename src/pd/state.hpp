@@ -29,12 +29,14 @@ using TensorField = std::vector<Eigen::Matrix3d>;
 using PaddedTensor = Eigen::Matrix<double, 4, 3>;
 using PaddedTensorField = std::vector<PaddedTensor>;
 
-// What a body's bonds need: its horizon delta and the bond micromodulus 18 K / (pi delta^4) of
+// What a body's bonds need: its horizon delta, the bond micromodulus 18 K / (pi delta^4) of
 // its material (Silling and Askari, Comput. Struct. 83 (2005), eq 23 of the PD paper's ref 49),
-// the unit of the stabilisation and of the contact force.
+// the unit of the stabilisation and of the contact force, and the zero-energy-mode control's
+// constant G_s c / l (pd/control_length.hpp).
 struct BodyBonds {
   double horizon = 0.0;       // m
   double micromodulus = 0.0;  // N/m^6
+  double control = 0.0;       // G_s c / l, N/m^7
 };
 
 // A ghost: the image of real point `source` mirrored across the x plane (flips bit 0), the y

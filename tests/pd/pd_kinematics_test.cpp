@@ -11,6 +11,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "case/load.hpp"
 #include "core/error.hpp"
@@ -251,7 +252,7 @@ TEST(PeridynamicControl, LeavesAQuadraticDeformationAloneAtSurfacesToo) {
 }
 
 // The control's force is accumulated from its rate step by step (pd/forces.hpp). In an elastic
-// body (r = 1) the sum is Silling's penalty G_s c / |xi| omega (z_i + z_j) on the current
+// body (r = 1) the sum is Silling's penalty G_s c / l omega (z_i + z_j) on the current
 // positions, z = Y - C q(xi), because z is linear in the positions and velocity Verlet moves
 // them by dt v^{n+1/2}, the velocities the rate is taken with. The penalty on the positions is
 // the same force function with the positions in place of the velocities (C is then the
@@ -278,6 +279,35 @@ TEST(PeridynamicControl, AccumulatesToSillingsPenaltyOnThePositions) {
   }
   EXPECT_GT(largest, 0.0);
   EXPECT_LT(worst, 1e-9 * largest);  // measured 1.0e-11 (40 steps)
+}
+
+// The penalty is a linear function of the displacements (above), f = -A u; it derives from a
+// stored energy, and so can only give back what it took, if and only if A is symmetric in the
+// points' volumes: the work of one field's force on another's displacement equals the converse
+// (Betti's reciprocity), sum V_i w_i . f(u)_i = sum V_i u_i . f(w)_i, for any two fields.
+TEST(PeridynamicControl, IsConservative) {
+  State s = block();
+  const auto control_of = [&](auto field) {
+    std::vector<Eigen::Vector3d> f(s.points.size());
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      for (int d = 0; d < 3; ++d) s.points.velocity[d][i] = field(i, d);
+    refresh_neighbours(s);
+    set_gradients(s, Eigen::Matrix3d::Zero());
+    for (std::size_t i = 0; i < s.points.size(); ++i) f[i] = force_density(s, i).control_rate;
+    return f;
+  };
+  const auto u = [](std::size_t i, int d) { return std::sin(1.3 * i + 2.1 * d); };
+  const auto w = [](std::size_t i, int d) { return std::cos(0.7 * i - 1.1 * d + 0.3); };
+  const std::vector<Eigen::Vector3d> f_u = control_of(u), f_w = control_of(w);
+  double w_on_u = 0.0, u_on_w = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const double V = s.points.volume0[i];
+    const Eigen::Vector3d u_i(u(i, 0), u(i, 1), u(i, 2)), w_i(w(i, 0), w(i, 1), w(i, 2));
+    w_on_u += V * w_i.dot(f_u[i]);
+    u_on_w += V * u_i.dot(f_w[i]);
+    scale += V * w_i.norm() * f_u[i].norm();
+  }
+  EXPECT_LT(std::abs(w_on_u - u_on_w), 1e-12 * scale) << w_on_u << " against " << u_on_w;
 }
 
 TEST(PeridynamicForces, InternalForcesSumToZero) {

@@ -2,9 +2,9 @@
 // lambda / (c + |v|), lambda a point's smallest principal stretch. On the PD paper's Cu on Cu at
 // 500 m/s, coarse (examples/verification/pd-quarter-impact.yaml):
 // - the default, cfl 1.2, gives the impact of cfl 0.3 (rebound and crater within 0.5 %, measured
-//   0.01 % and 0.16 %) with the energy budget within 0.5 %;
+//   0.11 % and 0.05 %) with the energy budget within 0.5 %;
 // - cfl 2 runs to the end with the budget within the 2 % asked of every verification run
-//   (measured 1.4 %, rebound 113.05 m/s): with h alone in place of lambda h it faulted at 7.1 ns,
+//   (measured 1.4 %, rebound 122.60 m/s): with h alone in place of lambda h it faulted at 7.1 ns,
 //   once the particle's south pole was compressed to lambda = 0.5 (measured).
 #include <gtest/gtest.h>
 
