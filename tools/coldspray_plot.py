@@ -585,8 +585,9 @@ def run_sections(folder, times, fields, options):
     case = CaseInfo(os.path.join(folder, "case.resolved.yaml"))
     body_ids = body_ids_for(case, split_list(options.bodies))
     pvd = os.path.join(folder, "snapshots.pvd")
-    snapshots = pick_snapshots(read_pvd(pvd), times, pvd)
-    reference = read_vtu(read_pvd(pvd)[0][1]) if options.cut == "material" else None
+    entries = read_pvd(pvd)
+    snapshots = pick_snapshots(entries, times, pvd)
+    reference = read_vtu(entries[0][1]) if options.cut == "material" else None
     sections = []
     for time, path in snapshots:
         data = read_vtu(path)
