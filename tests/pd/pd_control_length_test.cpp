@@ -2,8 +2,7 @@
 // sum of omega beta / |xi|. In the continuum limit (horizon >> spacing) the sums are integrals
 // over a ball: l = int r^2 omega dr / int r omega dr, 2 delta / 3 for omega = 1 and delta / 2
 // for omega = delta / r (approached as h / delta); at the default horizon factor 3 the lattice
-// gives 0.709 delta
-// (docs/pd.md, "Zero-energy modes").
+// gives 0.709 delta (docs/pd.md, "Zero-energy modes").
 #include <gtest/gtest.h>
 
 #include <cmath>
