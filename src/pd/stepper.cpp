@@ -54,8 +54,9 @@ void drift(State& s) {
 // Eqs 5, 28-31 at every point: F and L = Fdot F^-1 from the family, then the materials' update
 // (the MPM's, bodies/update_points.hpp), A = P K^-1 with P = J (sigma - q I) F^-T and, for the
 // control along the flow, the point's flow direction and softening (pd/control_along_flow.hpp).
-// Returns the largest (c + |v|) / lambda, lambda the point's compressed stretch
-// (pd/time_step.hpp): the speed at which a signal crosses the reference lattice.
+// Returns the largest (c + |v|) / min(1, lambda / 0.7), lambda the point's compressed stretch
+// (pd/time_step.hpp): the speed at which a signal crosses the reference lattice, over the
+// factor by which compression lowers the stable step.
 double update_stress(State& s) {
   bodies::Points& P = s.points;
   const double dt = s.dt;
@@ -119,7 +120,8 @@ double update_stress(State& s) {
       const double speed =
           std::sqrt(P.velocity[0][i] * P.velocity[0][i] + P.velocity[1][i] * P.velocity[1][i] +
                     P.velocity[2][i] * P.velocity[2][i]);
-      max_speed = std::max(max_speed, (P.sound_speed[i] + speed) / s.compressed_stretch[i]);
+      max_speed = std::max(
+          max_speed, (P.sound_speed[i] + speed) / step_length_factor(s.compressed_stretch[i]));
     }
   }
   return max_speed;

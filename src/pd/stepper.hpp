@@ -5,9 +5,9 @@
 
 namespace coldspray::pd {
 
-// cfl h / max((c + |v|) / lambda), h the smallest body spacing and lambda a point's compressed
-// stretch (pd/time_step.hpp): the bound of an explicit scheme on the lattice as deformed
-// (docs/pd.md, "Time step").
+// cfl h / max((c + |v|) / min(1, lambda / 0.7)), h the smallest body spacing and lambda a point's
+// compressed stretch (pd/time_step.hpp): a fixed fraction of the measured bound of the explicit
+// scheme on the lattice as deformed (docs/pd.md, "Time step").
 double stable_time_step(const State& s, double cfl);
 
 // Advances the state by s.dt. Throws RunFault (body, point, time, cause) when a point's state

@@ -3,7 +3,7 @@
 // (examples/verification/pd-quarter-impact.yaml), with the bulk viscosity off so that the
 // budget's viscous entry is the control's work alone:
 // - the answer does not depend on the step: cfl 1.2 (the default) and 0.3 give the rebound and
-//   the crater within 1 % (measured 0.02 % and 0.17 %; a first form, with the tangent's algorithmic
+//   the crater within 1 % (measured 0.07 % and 0.14 %; a first form, with the tangent's algorithmic
 //   slope, moved the rebound from 3.5 to 26.8 m/s);
 // - the control takes energy and gives back no more than it took: its work on the bodies is
 //   negative at both steps (a form that softened every increment, with no pair history, did

@@ -2,7 +2,7 @@
 // c / l it derives from a stored energy): on the PD paper's Cu on Cu at 500 m/s, coarse, whole
 // model (examples/verification/pd-quarter-impact.yaml without its symmetry planes) and with the
 // bulk viscosity off, the budget's viscous entry is the work done against the control alone, a
-// spring's energy, so it is never negative (measured: at most 14 % of the impact energy, 5.3 % at
+// spring's energy, so it is never negative (measured: at most 14 % of the impact energy, 5.2 % at
 // the end, and never below zero). A control that fed energy in, as Silling's c / |xi| weight did
 // in the D/25 impact (-3.5 % at 105 ns), would drive it negative (that form was not run on this
 // coarse case).
