@@ -100,7 +100,22 @@ struct Solver {
 
 enum class ContactNormal { MaxGradient, Body, HighestId };
 
+// The force law between points of different bodies in peridynamics (docs/pd.md, "Contact"): the
+// short-range repulsion (its constants under `peridynamics`), or the PD paper's contact model 1,
+// a Lennard-Jones-type potential (eqs 15-22). The MPM's grid contact has no law to choose.
+enum class ContactModel { Repulsive, LennardJones };
+
 struct Contact {
+  ContactModel model = ContactModel::Repulsive;
+  // Contact model 1 (PD paper eqs 15-22): phi = alpha [(r0/r)^m - 2 beta (r0/r)^n], cut off at
+  // cutoff x r0. r0 is "a little larger than the node spacing" (the paper); ours is 1.1 of the
+  // finer spacing of the pair of bodies. alpha, unset, follows from the bulk modulus (eq 22).
+  double beta = 0.005;               // the paper's Fig 6(b)
+  double r0 = 1.1;                   // in spacings
+  double cutoff = 2.75;              // in r0 (the paper's R_c)
+  std::optional<double> alpha;       // J
+  double repulsion_exponent = 12.0;  // m
+  double attraction_exponent = 6.0;  // n
   ContactNormal normal = ContactNormal::MaxGradient;
   std::string normal_body;  // with ContactNormal::Body
   double friction = 0.0;    // Coulomb coefficient; 0 = frictionless

@@ -51,6 +51,9 @@ inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingMod
                                                              {"strain", BondingModel::Strain},
                                                              {"energy", BondingModel::Energy}}}};
 
+inline constexpr Names<ContactModel, 2> kContactModelNames{
+    {{{"repulsive", ContactModel::Repulsive}, {"lennard-jones", ContactModel::LennardJones}}}};
+
 inline constexpr Names<NodalAverage, 2> kNodalAverageNames{
     {{{"count", NodalAverage::Count}, {"weight", NodalAverage::Weight}}}};
 
@@ -136,6 +139,18 @@ void fields(IO& io, Solver& s) {
 
 template <class IO>
 void fields(IO& io, Contact& c) {
+  io.scalar("model", c.model, kContactModelNames, kOptional);
+  io.quantity("beta", c.beta, units::kDimensionless, kOptional, Range{0.0, 1.0, true, true});
+  io.quantity("r0", c.r0, units::kDimensionless, kOptional, kPositive);
+  io.quantity("cutoff", c.cutoff, units::kDimensionless, kOptional,
+              Range{1.0, kInfinity, true, false});
+  io.quantity("alpha", c.alpha, units::kEnergy, kOptional, kPositive);
+  io.quantity("repulsion_exponent", c.repulsion_exponent, units::kDimensionless, kOptional,
+              kPositive);
+  io.quantity("attraction_exponent", c.attraction_exponent, units::kDimensionless, kOptional,
+              kPositive);
+  io.check(c.repulsion_exponent > c.attraction_exponent, "repulsion_exponent",
+           "must exceed attraction_exponent (the repulsion must win at short range)");
   io.scalar("normal", c, ContactNormalText{}, kOptional);
   io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
   io.scalar("gap_check", c.gap_check, Flag{}, kOptional);

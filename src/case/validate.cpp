@@ -42,6 +42,9 @@ void check_solver_sections(const Document& doc, const Case& c) {
         if (!b.roller.empty())
           fail_at(doc, {"bodies", b.name, "roller"},
                   "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
+      if (c.contact.model != ContactModel::Repulsive)
+        fail_at(doc, {"contact", "model"},
+                "is peridynamics only: the MPM's grid contact has no force law to choose");
       if (c.solver.cfl > kMaxMpmCfl)
         fail_at(doc, {"solver", "cfl"},
                 "must be in (0, 1] with solver.method mpm, got '" + shortest_text(c.solver.cfl) +

@@ -96,17 +96,17 @@ void append_comment(std::string& y, std::string_view text) {
   y += '\n';
 }
 
-// The bodies: the particle touching z = 0 from above at t = 0, moving down at the spec's speed,
-// and the substrate cylinder below z = 0, both at the spec's spacing and 298 K; the solver's
-// boundary keys of the substrate follow.
+// The bodies: the particle `lift` above z = 0 at t = 0 (0: touching it), moving down at the
+// spec's speed, and the substrate cylinder below z = 0, both at the spec's spacing and 298 K; the
+// solver's boundary keys of the substrate follow.
 void append_bodies(std::string& y, const ImpactSpec& spec, const std::string& substrate_material,
-                   double substrate_radius, double substrate_height) {
+                   double substrate_radius, double substrate_height, double lift = 0.0) {
   const double radius = 0.5 * spec.diameter;
   auto line = [&y](const std::string& text) { y += text + "\n"; };
   line("bodies:");
   line("  - name: particle");
   line("    material: " + spec.material);
-  line(fmt::format("    shape: {{type: sphere, center: [0, 0, {}], radius: {}}}", um(radius),
+  line(fmt::format("    shape: {{type: sphere, center: [0, 0, {}], radius: {}}}", um(radius + lift),
                    um(radius)));
   line("    spacing: " + um(spec.spacing));
   line(fmt::format("    velocity: [0, 0, -{} m/s]", number(spec.speed)));
@@ -118,6 +118,18 @@ void append_bodies(std::string& y, const ImpactSpec& spec, const std::string& su
                   um(substrate_height), um(substrate_radius), um(substrate_height)));
   line("    spacing: " + um(spec.spacing));
   line("    temperature: 298 K");
+}
+
+// With contact model 1 the particle starts where its nearest points are a cut-off R_c (the
+// schema's default r0 and cut-off) from the substrate's: a whole number of spacings above
+// touching, so that the lattices stay aligned, and no pair closer than the potential's
+// equilibrium distance at t = 0 (pd/setup.cpp refuses that).
+double lennard_jones_lift(const ImpactSpec& spec) {
+  if (spec.contact != "lennard-jones") return 0.0;
+  const case_file::Contact defaults;
+  const double reach = defaults.cutoff * defaults.r0 * spec.spacing;
+  // Touching, the nearest points are one spacing apart; each spacing of lift adds one.
+  return (std::ceil(reach / spec.spacing - 1e-9) - 1.0) * spec.spacing;
 }
 
 // The PD paper's set-up ("Simulation Setup", Fig 2): the particle on a cylinder of radius and
@@ -140,10 +152,15 @@ GeneratedCase peridynamics_impact_case(const ImpactSpec& spec) {
       y, fmt::format("A {} um particle of {} hits a substrate of {} at {} m/s in correspondence "
                      "peridynamics (docs/pd.md), as the PD paper's Fig 2: the substrate cylinder's "
                      "radius and height are four particle radii ({}), its bottom is fixed and its "
-                     "side restrained in x and y; the particle touches the substrate's top face "
-                     "z = 0 at t = 0; {} points across the particle.",
+                     "side restrained in x and y; the particle {} at t = 0; {} points across the "
+                     "particle.",
                      short_number(spec.diameter / kUm), spec.material, substrate_material,
                      short_number(spec.speed), um(substrate),
+                     spec.contact == "lennard-jones"
+                         ? "starts " + um(lennard_jones_lift(spec)) +
+                               " above the substrate's top face z = 0, where contact model 1's "
+                               "cut-off first reaches it"
+                         : std::string("touches the substrate's top face z = 0"),
                      short_number(spec.diameter / spec.spacing)));
   if (quarter)
     append_comment(y,
@@ -155,10 +172,15 @@ GeneratedCase peridynamics_impact_case(const ImpactSpec& spec) {
       "peridynamics, {}",
       spec.material, short_number(spec.diameter / kUm), short_number(spec.speed),
       um(2.0 * substrate), um(substrate), substrate_material, quarter ? "one quarter" : "whole"));
-  append_bodies(y, spec, substrate_material, substrate, substrate);
+  append_bodies(y, spec, substrate_material, substrate, substrate, lennard_jones_lift(spec));
   line("    fixed: [bottom]");
   line("    roller: [side]   # restrained in x and y (the PD paper)");
   if (quarter) line("symmetry: {x: 0 um, y: 0 um}");
+  if (spec.contact == "lennard-jones") {
+    line("contact:");
+    line("  model: lennard-jones   # the PD paper's contact model 1 (eqs 15-22)");
+    if (spec.beta) line("  beta: " + number(*spec.beta));
+  }
   line("solver:");
   line("  method: peridynamics");
   line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));

@@ -47,6 +47,8 @@ struct ImpactSpec {
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   Symmetry symmetry = Symmetry::Quarter;       // in 3D: model one quarter
   std::string bonding = "energy";              // none | strain | energy
+  std::string contact = "repulsive";           // peridynamics: repulsive | lennard-jones
+  std::optional<double> beta;                  // lennard-jones; unset: the schema's default
   std::optional<double> critical_energy;       // J/m^2; unset: the schema's default
   std::optional<double> critical_energy_rate;  // J/m^2/s
   std::optional<double> critical_strain;

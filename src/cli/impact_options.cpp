@@ -52,6 +52,12 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
                  "3D: model one quarter (symmetry planes x = 0, y = 0) or the whole")
       ->check(CLI::IsMember({"quarter", "none"}))
       ->capture_default_str();
+  sub.add_option("--contact", o.contact,
+                 "Peridynamics: repulsive, or lennard-jones (the PD paper's contact model 1; "
+                 "the particle starts a cut-off above the substrate)")
+      ->check(CLI::IsMember({"repulsive", "lennard-jones"}))
+      ->capture_default_str();
+  sub.add_option("--beta", o.beta, "Peridynamics, lennard-jones: the adhesion parameter beta");
   sub.add_option("--bonding", o.bonding,
                  "Bonding model (thesis Chapter 4); default energy (MPM), none (peridynamics)")
       ->check(CLI::IsMember({"none", "strain", "energy"}));
@@ -123,6 +129,14 @@ void peridynamics_spec(const ImpactCaseOptions& o, ImpactSpec& spec) {
     throw InputError("--bonding", "",
                      "the direct bonding model is the MPM's: with --solver peridynamics, none");
   spec.bonding = "none";
+  spec.contact = o.contact;
+  if (!o.beta.empty()) {
+    if (o.contact != "lennard-jones")
+      throw InputError("--beta", "", "is the parameter of --contact lennard-jones");
+    spec.beta = parse_option_quantity("--beta", o.beta, units::kDimensionless);
+    if (!(*spec.beta > 0.0 && *spec.beta < 1.0))
+      throw InputError("--beta", "", fmt::format("must be in (0, 1), got '{}'", o.beta));
+  }
   spec.spacing = o.spacing.empty() ? spec.diameter / kPeridynamicsPointsAcross
                                    : positive("--spacing", o.spacing, units::kLength, "must be");
   if (spec.spacing > spec.diameter / 4.0)
@@ -158,6 +172,10 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
       throw InputError("--grid", "", e.what());
     }
     check_cell_fits(spec.cell_size, spec.diameter, "--grid");
+    if (o.contact != "repulsive" || !o.beta.empty())
+      throw InputError(
+          o.beta.empty() ? "--contact" : "--beta", "",
+          "is peridynamics' option: the MPM's grid contact has no force law to choose");
     spec.geometry =
         o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
     spec.bonding = o.bonding.empty() ? "energy" : o.bonding;

@@ -22,11 +22,12 @@ struct ImpactCaseOptions {
   std::string material, substrate_material, grid = "0.7um/0.175um", spacing;
   std::string geometry, symmetry = "quarter", bonding;
   std::string gc, gc_rate, eps_c, eps_c_rate, floor;
+  std::string contact = "repulsive", beta;
   std::string end_time = "80ns", shape_function = "gimp";
 };
 
 // --solver, --material (required with the MPM), --substrate-material, --grid (MPM), --spacing
-// (PD), --geometry, --symmetry, --bonding, --Gc,
+// (PD), --geometry, --symmetry, --contact and --beta (PD), --bonding, --Gc,
 // --Gc-rate, --eps-c, --eps-c-rate, --floor, --end-time, --shape-function; `o` must outlive
 // the parse. `particle_options` is called after the materials, to add the caller's options for
 // the particle's size and speed there (their place in --help and in generated headers).

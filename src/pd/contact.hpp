@@ -8,8 +8,8 @@
 // stretched (its largest hole, at a cube's centre, is 0.87 h from the corners at rest), and 0.9
 // of the initial distance lets bodies start closer than that without a push. The pairs are found in
 // the current configuration with a cell list, kept with a skin and rebuilt once some point has
-// moved half the skin since the last build. Adhesive contact (the PD paper's models 1 and 2) will
-// be another force law on these same pairs.
+// moved half the skin since the last build. The PD paper's contact model 1 (pd/lennard_jones.hpp)
+// is another force law on these same pairs; model 2 will be a third.
 #pragma once
 
 #include <array>
@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pd/lennard_jones.hpp"
 #include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
@@ -38,12 +39,20 @@ struct ContactList {
   void build(const Neighbours& N, double reach);
 };
 
-// The contact force law between points i and j (of different bodies): contact distance
-// d = min(distance, initial_fraction |X_i - X_j|), constant k_c c / delta in N/m^7 (see above).
+// The contact force law between points i and j (of different bodies), reaching `reach`.
+// Repulsive: contact distance d = min(distance, initial_fraction |X_i - X_j|), constant k_c c /
+// delta in N/m^7 (see above). Lennard-Jones (model 1): the pair's alpha is alpha_per_volumes V_i
+// V_j (eq 22), or alpha itself when the case gives it (alpha_per_volumes = 0).
 struct ContactLaw {
+  enum class Kind { Repulsive, LennardJones };
+  Kind kind = Kind::Repulsive;
+  double reach = 0.0;             // m: no force beyond
   double distance = 0.0;          // m
   double initial_fraction = 0.0;  // of the pair's distance at t = 0
   double stiffness = 0.0;         // k_c c / delta, N/m^7
+  LennardJones lennard_jones;
+  double alpha_per_volumes = 0.0;  // J/m^6
+  double alpha = 0.0;              // J
 };
 
 }  // namespace coldspray::pd

@@ -15,7 +15,13 @@ Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
   const ContactLaw& law = s.contact_law[N.body[i] * s.bodies.size() + N.body[j]];
   const Eigen::Vector3d r = (N.position[i] - N.position[j]).head<3>();
   const double length = r.norm();
-  if (length >= law.distance || length == 0.0) return Eigen::Vector3d::Zero();
+  if (length >= law.reach || length == 0.0) return Eigen::Vector3d::Zero();
+  if (law.kind == ContactLaw::Kind::LennardJones) {
+    // Eq 16 over V_i: the force density on i.
+    const double alpha_over_V_i = law.alpha_per_volumes != 0.0 ? law.alpha_per_volumes * N.volume[j]
+                                                               : law.alpha / N.volume[i];
+    return alpha_over_V_i * force_per_alpha(law.lennard_jones, length) / length * r;
+  }
   const double d =
       std::min(law.distance, law.initial_fraction * (N.reference[i] - N.reference[j]).norm());
   if (length >= d) return Eigen::Vector3d::Zero();

@@ -56,15 +56,55 @@ void invert_moments(const case_file::Case& c, State& s) {
   }
 }
 
-// The law between bodies a and b (pd/contact.hpp): the distance from the finer spacing, the
-// constant from the softer material and the larger horizon, the same both ways.
-ContactLaw contact_law(const State& s, std::size_t a, std::size_t b) {
+// The law between bodies a and b (pd/contact.hpp): lengths from the finer spacing, constants
+// from the softer material and the larger horizon, the same both ways.
+ContactLaw contact_law(const case_file::Contact& contact, const State& s, std::size_t a,
+                       std::size_t b) {
   const double delta = std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon);
   const double K = std::min(s.bodies[a].material.elastic.bulk_modulus,
                             s.bodies[b].material.elastic.bulk_modulus);
+  const double spacing = std::min(s.bodies[a].spacing, s.bodies[b].spacing);
+  ContactLaw law;
+  if (contact.model == case_file::ContactModel::LennardJones) {
+    law.kind = ContactLaw::Kind::LennardJones;
+    law.lennard_jones = {contact.r0 * spacing, contact.beta, contact.repulsion_exponent,
+                         contact.attraction_exponent, contact.cutoff * contact.r0 * spacing};
+    law.reach = law.lennard_jones.cutoff;
+    if (contact.alpha)
+      law.alpha = *contact.alpha;
+    else
+      law.alpha_per_volumes = alpha_per_volumes(law.lennard_jones, K, delta);
+    return law;
+  }
   const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
-  return {s.settings.contact_distance * std::min(s.bodies[a].spacing, s.bodies[b].spacing),
-          s.settings.contact_initial_fraction, s.settings.contact_stiffness * micromodulus / delta};
+  law.distance = law.reach = s.settings.contact_distance * spacing;
+  law.initial_fraction = s.settings.contact_initial_fraction;
+  law.stiffness = s.settings.contact_stiffness * micromodulus / delta;
+  return law;
+}
+
+// Model 1 pushes apart with a force that grows as (r0/r)^(m+1): bodies must start no closer
+// than its equilibrium distance (eq 17), or the first step would fling them apart.
+void check_initial_gap(const case_file::Case& c, const State& s) {
+  const Neighbours& N = s.neighbours;
+  for (std::size_t i = 0; i < N.real; ++i)
+    for (std::size_t k = s.contact.begin[i]; k < s.contact.begin[i + 1]; ++k) {
+      const std::size_t j = s.contact.other[k];
+      const ContactLaw& law = s.contact_law[N.body[i] * s.bodies.size() + N.body[j]];
+      if (law.kind != ContactLaw::Kind::LennardJones) continue;
+      const double r = (N.position[i] - N.position[j]).head<3>().norm();
+      // Closer than both r_e and the cut-off: pushed apart at t = 0.
+      const double r_e = equilibrium_distance(law.lennard_jones);
+      if (r < r_e && r < law.reach)
+        case_file::fail_at(
+            c, "contact.model",
+            fmt::format("bodies '{}' and '{}' start {:.4g} um apart (points {} and {}), closer "
+                        "than the Lennard-Jones equilibrium distance r0 (2 n beta / m)^(-1/(m-n)) "
+                        "= {:.4g} um (PD paper eq 17): place them at least that far apart "
+                        "(`coldspray impact --contact lennard-jones` does)",
+                        s.bodies[N.body[i]].name, s.bodies[N.body[j]].name, r * 1e6, i, j,
+                        r_e * 1e6));
+    }
 }
 
 }  // namespace
@@ -154,11 +194,12 @@ State build_state(const case_file::Case& c) {
   double reach = 0.0;
   for (std::size_t a = 0; a < m; ++a)
     for (std::size_t b = 0; b < m; ++b) {
-      s.contact_law.push_back(contact_law(s, a, b));
-      reach = std::max(reach, s.contact_law.back().distance);
+      s.contact_law.push_back(contact_law(c.contact, s, a, b));
+      reach = std::max(reach, s.contact_law.back().reach);
     }
   s.contact.skin = 0.5 * s.min_spacing;
   s.contact.build(N, reach + s.contact.skin);
+  check_initial_gap(c, s);
   return s;
 }
 

@@ -205,7 +205,7 @@ void step(State& s) {
   refresh_neighbours(s);
   if (s.contact.stale(s.neighbours)) {
     double reach = 0.0;
-    for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.distance);
+    for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.reach);
     s.contact.build(s.neighbours, reach + s.contact.skin);
   }
   s.max_signal_speed = update_stress(s);

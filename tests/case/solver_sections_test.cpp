@@ -68,6 +68,31 @@ TEST(SolverSections, TheBondingModelIsTheMpms) {
                "bonding.model", "must be none with solver.method peridynamics");
 }
 
+TEST(SolverSections, ContactModelOneIsPeridynamicsOnly) {
+  expect_error("al-14um-810.yaml", {{"contact.model", "lennard-jones"}}, "contact.model",
+               "is peridynamics only");
+}
+
+TEST(SolverSections, ContactModelOneParametersAreChecked) {
+  const std::string spheres = "verification/pd-elastic-spheres.yaml";
+  for (const char* beta : {"0", "-0.001", "1"})
+    expect_error(spheres, {{"contact.beta", beta}}, "contact.beta", "must be in (0, 1)");
+  expect_error(spheres, {{"contact.r0", "0"}}, "contact.r0", "must be > 0");
+  expect_error(spheres, {{"contact.cutoff", "1"}}, "contact.cutoff", "must be > 1");
+  expect_error(spheres, {{"contact.alpha", "-1 J"}}, "contact.alpha", "must be > 0");
+  expect_error(spheres, {{"contact.repulsion_exponent", "6"}}, "contact.repulsion_exponent",
+               "must exceed attraction_exponent");
+  expect_error(spheres, {{"contact.model", "sticky"}}, "contact.model", "lennard-jones");
+  const Case c = load_case(
+      example(spheres),
+      {{"contact.model", "lennard-jones"}, {"contact.beta", "0.004"}, {"contact.alpha", "2e-6 J"}});
+  EXPECT_EQ(c.contact.model, ContactModel::LennardJones);
+  EXPECT_EQ(c.contact.beta, 0.004);
+  EXPECT_EQ(c.contact.alpha, 2e-6);
+  EXPECT_EQ(c.contact.r0, 1.1);
+  EXPECT_EQ(c.contact.cutoff, 2.75);
+}
+
 TEST(SolverSections, RollerFacesArePeridynamicsOnly) {
   expect_error("al-14um-810.yaml", {{"bodies.substrate.roller", "[side]"}},
                "bodies.substrate.roller", "is peridynamics only");

@@ -172,6 +172,35 @@ TEST(Impact, PeridynamicsBuildsThePdPapersSetUp) {
   EXPECT_EQ(whole.bodies.at(1).material, "al-jc");
 }
 
+// --contact lennard-jones: the PD paper's contact model 1, the particle lifted by whole spacings
+// until its nearest points are a cut-off (2.75 x 1.1 spacings = 3.025) from the substrate's:
+// 3 spacings, 4 between the nearest points.
+TEST(Impact, ContactModelOneLiftsTheParticleToItsCutOff) {
+  const case_file::Case c = written_case(
+      "impact --solver peridynamics --diameter 30um --velocity 500m/s --spacing 1.2um "
+      "--contact lennard-jones --beta 0.004");
+  EXPECT_EQ(c.contact.model, case_file::ContactModel::LennardJones);
+  EXPECT_EQ(c.contact.beta, 0.004);
+  EXPECT_NEAR(std::get<case_file::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
+  const case_file::Case repulsive =
+      written_case("impact --solver peridynamics --diameter 30um --velocity 500m/s");
+  EXPECT_EQ(repulsive.contact.model, case_file::ContactModel::Repulsive);
+  EXPECT_NEAR(std::get<case_file::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
+}
+
+// Model 1 on bodies seeded touching would push them apart at t = 0 with (r0/r)^13: refused.
+TEST(Impact, ContactModelOneRefusesBodiesCloserThanItsEquilibrium) {
+  const std::string dir = make_temp_dir("impact");
+  const auto r = run_coldspray(
+      "run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+          "/examples/verification/pd-quarter-impact.yaml' --set contact.model=lennard-jones",
+      dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("contact.model"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("closer than the Lennard-Jones equilibrium distance"), std::string::npos)
+      << r.output;
+}
+
 TEST(Impact, SolverOptionsThatDoNotFitAreBadInput) {
   const std::string pd = "impact --solver peridynamics --diameter 10um --velocity 500m/s";
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
@@ -179,7 +208,10 @@ TEST(Impact, SolverOptionsThatDoNotFitAreBadInput) {
            {pd + " --geometry axisymmetric", "--geometry: peridynamics runs in 3d only"},
            {pd + " --spacing 5um", "--spacing: the spacing (5 um) must be at most a quarter"},
            {"impact --diameter 10um --velocity 500m/s", "--material: required with --solver mpm"},
-           {kCase22 + " --spacing 1um", "--spacing: is peridynamics' option"}}) {
+           {kCase22 + " --spacing 1um", "--spacing: is peridynamics' option"},
+           {kCase22 + " --contact lennard-jones", "--contact: is peridynamics' option"},
+           {pd + " --beta 0.004", "--beta: is the parameter of --contact lennard-jones"},
+           {pd + " --contact lennard-jones --beta 0", "--beta: must be in (0, 1)"}}) {
     const auto r = run_coldspray(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;

@@ -1,0 +1,29 @@
+#include "pd/lennard_jones.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace coldspray::pd {
+
+double equilibrium_distance(const LennardJones& lj) {
+  return lj.r0 * std::pow(2.0 * lj.n * lj.beta / lj.m, -1.0 / (lj.m - lj.n));
+}
+
+double potential_per_alpha(const LennardJones& lj, double r) {
+  const double x = lj.r0 / r;
+  return std::pow(x, lj.m) - 2.0 * lj.beta * std::pow(x, lj.n);
+}
+
+double force_per_alpha(const LennardJones& lj, double r) {
+  if (r >= lj.cutoff) return 0.0;
+  const double x = lj.r0 / r;
+  return (lj.m * std::pow(x, lj.m + 1.0) - 2.0 * lj.n * lj.beta * std::pow(x, lj.n + 1.0)) / lj.r0;
+}
+
+double alpha_per_volumes(const LennardJones& lj, double K, double delta) {
+  const double c = 18.0 * K / (std::numbers::pi * std::pow(delta, 5));  // eq 21, N/m^7
+  const double x_e = lj.r0 / equilibrium_distance(lj);
+  return c * lj.r0 * lj.r0 / (2.0 * lj.n * (lj.m - lj.n) * lj.beta * std::pow(x_e, lj.n + 2.0));
+}
+
+}  // namespace coldspray::pd
