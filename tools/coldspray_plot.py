@@ -787,6 +787,30 @@ def command_pbcp_velocity(options):
     save_figure(fig, options.out, options.dpi)
 
 
+def command_sweep(options):
+    """A sweep's result column against its varied key, one line per sweep folder (e.g. per
+    impact speed: the PD paper's Fig 7 is particle.cor against contact.beta)."""
+    labels = run_labels(options.dirs, options.labels)
+    fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 4.0))
+    for k, folder in enumerate(options.dirs):
+        rows = read_csv_rows(os.path.join(require_dir(folder), "sweep.csv"))
+        for column in (options.x, options.y):
+            if column not in rows[0]:
+                raise PlotError(f"{folder}/sweep.csv: no column '{column}' "
+                                f"(columns: {', '.join(rows[0])})")
+        done = sorted((_to_float(r[options.x]), _to_float(r[options.y])) for r in rows
+                      if r["status"] == "ok")
+        if not done:
+            raise PlotError(f"{folder}/sweep.csv: no finished case")
+        ax.plot([d[0] for d in done], [d[1] for d in done], "o-", color=f"C{k}",
+                label=labels[k])
+    ax.set_xlabel(options.x)
+    ax.set_ylabel(options.y)
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save_figure(fig, options.out, options.dpi)
+
+
 PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
                     "critical_strain": (r"$\epsilon_c$", 1.0),
@@ -943,6 +967,17 @@ def build_parser():
     calibration.add_argument("--dpi", type=int, default=150)
     calibration.add_argument("--out", required=True, help="PNG file to write")
     calibration.set_defaults(run=command_calibration)
+
+    sweep = commands.add_parser("sweep", help="a sweep's column against its varied key "
+                                              "(coldspray sweep; the PD paper's Fig 7)")
+    sweep.add_argument("dirs", nargs="+", help="sweep output folders (sweep.csv), overlaid")
+    sweep.add_argument("--x", required=True, help="varied key, e.g. contact.beta")
+    sweep.add_argument("--y", required=True, help="result column, e.g. particle.cor")
+    sweep.add_argument("--labels", help="legend labels, comma-separated (default folder names)")
+    sweep.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    sweep.add_argument("--dpi", type=int, default=150)
+    sweep.add_argument("--out", required=True, help="PNG file to write")
+    sweep.set_defaults(run=command_sweep)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

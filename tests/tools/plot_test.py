@@ -342,11 +342,31 @@ class PlotToolTest(unittest.TestCase):
         result = self.run_tool("history", missing, "--columns", "kinetic", "--out", path)
         self.assert_failed_without_png(result, path, missing)
 
+    def test_sweep_plots_a_column_against_the_varied_key(self):
+        folder = write_sweep(self.out("sweep"))
+        path = self.out("sweep.png")
+        self.assert_png(self.run_tool("sweep", folder, folder, "--x", "contact.beta", "--y",
+                                      "particle.cor", "--labels", "500 m/s,again",
+                                      "--out", path), path)
+        missing = self.out("sweep-missing.png")
+        self.assert_failed_without_png(
+            self.run_tool("sweep", folder, "--x", "contact.beta", "--y", "particle.v_rest",
+                          "--out", missing), missing, "particle.v_rest")
+
     def test_calibration_draws_verdicts_or_tolerances(self):
         for by in ("verdict", "cor-pbcp"):
             folder = write_calibration(self.out("calibration-" + by), by)
             path = self.out(f"calibration-{by}.png")
             self.assert_png(self.run_tool("calibration", folder, "--out", path), path)
+
+
+def write_sweep(folder):
+    """A sweep folder as src/studies/sweep.cpp writes it: three cases, one failed."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "sweep.csv"), "w") as f:
+        f.write("case,status,contact.beta,particle.cor\n"
+                "case_0001,ok,0.002,0.08\ncase_0002,failed,0.004,nan\ncase_0003,ok,0.005,0.0\n")
+    return folder
 
 
 def write_calibration(folder, by):
