@@ -25,8 +25,11 @@ inline constexpr double kEnergyGrowthLimit = 0.2;
 
 class FaultChecks {
  public:
-  // `initial_total`: the run's total energy at t = 0 (kinetic + internal).
-  explicit FaultChecks(double initial_total) : initial_total_(initial_total) {}
+  // `initial_total`: the run's total energy at t = 0 (kinetic + internal). `adhesive`: the
+  // contact has an attractive well (the PD paper's contact model 1), whose depth the bodies may
+  // turn into motion.
+  explicit FaultChecks(double initial_total, bool adhesive = false)
+      : initial_total_(initial_total), adhesive_(adhesive) {}
 
   double initial_total() const { return initial_total_; }
 
@@ -41,6 +44,7 @@ class FaultChecks {
 
  private:
   double initial_total_;
+  bool adhesive_;
 };
 
 }  // namespace coldspray::run

@@ -48,7 +48,8 @@ Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::files
       snapshot_due_(c.output.snapshot_interval),
       verdict_(c.metrics, s),
       checkpoints_(c.output),
-      checks_(metrics::energy_budget(s).total()) {
+      checks_(metrics::energy_budget(s).total(),
+              c.contact.model == case_file::ContactModel::LennardJones) {
   summary_.threads = omp_get_max_threads();
   summary_.particles = s.points.size();
   summary_.discretisation = s.discretisation;

@@ -137,6 +137,27 @@ TEST(FaultChecks, ABodyFasterThanTheEnergyAllowsIsAFaultWhateverTheLedger) {
   }
 }
 
+// An adhesive contact (the PD paper's model 1) turns its well's depth into motion: what its
+// attraction released (the budget's contact entry below zero) is added to the energy a body's
+// mean motion may carry, and only then.
+TEST(FaultChecks, AnAdhesiveWellsReleaseMayDriveABody) {
+  Started r = started(bonding_impact(), 0);
+  bodies::Points& P = r.s.points;
+  const bodies::BodyRange& substrate = r.s.bodies[1];
+  double mass = 0.0;
+  for (std::size_t p = substrate.begin; p < substrate.end; ++p) mass += P.mass[p];
+  const double bound = std::sqrt(2.0 * (1.0 + kEnergyGrowthLimit) * r.initial_total / mass);
+  for (std::size_t p = substrate.begin; p < substrate.end; ++p) {
+    P.velocity[2][p] = 1.5 * bound;
+    P.contact_work[p] = 0.5 * P.mass[p] * P.velocity[2][p] * P.velocity[2][p];
+  }
+  const metrics::EnergyBudget e = metrics::energy_budget(r.s);
+  ASSERT_LT(e.contact, 0.0);
+  EXPECT_NO_THROW(FaultChecks(r.initial_total, /*adhesive=*/true).check(r.s, e));
+  EXPECT_NE(fault_in(r.s, r.initial_total).find("body 'substrate': mean velocity"),
+            std::string::npos);
+}
+
 TEST(FaultChecks, ANonFiniteTemperatureIsAFaultNamingThePoint) {
   Started r = started(bonding_impact(), 0);
   const std::size_t p = r.s.bodies[0].begin + 7;
