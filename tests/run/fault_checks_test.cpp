@@ -40,6 +40,13 @@ std::string fault_in(const bodies::Bodies& s, double initial_total) {
   return "";
 }
 
+// The sum of a per-point array over a body's points (its mass, its volume).
+double sum_over(const std::vector<double>& values, const bodies::BodyRange& body) {
+  double sum = 0.0;
+  for (std::size_t p = body.begin; p < body.end; ++p) sum += values[p];
+  return sum;
+}
+
 struct Started {
   mpm::State s;
   double initial_total;
@@ -101,8 +108,7 @@ TEST(FaultChecks, TotalEnergyGrowthIsAFault) {
   Started r = started(bonding_impact(), 0);
   bodies::Points& P = r.s.points;
   const bodies::BodyRange& particle = r.s.bodies[0];
-  double volume = 0.0;
-  for (std::size_t p = particle.begin; p < particle.end; ++p) volume += P.volume0[p];
+  const double volume = sum_over(P.volume0, particle);
   for (const double share : {0.1, 0.3}) {
     for (std::size_t p = particle.begin; p < particle.end; ++p)
       P.energy[p] = share * r.initial_total / volume;
@@ -121,8 +127,7 @@ TEST(FaultChecks, ABodyFasterThanTheEnergyAllowsIsAFaultWhateverTheLedger) {
   bodies::Points& P = r.s.points;
   const bodies::BodyRange& substrate = r.s.bodies[1];
   ASSERT_EQ(substrate.name, "substrate");
-  double mass = 0.0;
-  for (std::size_t p = substrate.begin; p < substrate.end; ++p) mass += P.mass[p];
+  const double mass = sum_over(P.mass, substrate);
   const double bound = std::sqrt(2.0 * (1.0 + kEnergyGrowthLimit) * r.initial_total / mass);
   for (const double factor : {0.99, 1.01}) {
     for (std::size_t p = substrate.begin; p < substrate.end; ++p) {
@@ -144,8 +149,7 @@ TEST(FaultChecks, AnAdhesiveWellsReleaseMayDriveABody) {
   Started r = started(bonding_impact(), 0);
   bodies::Points& P = r.s.points;
   const bodies::BodyRange& substrate = r.s.bodies[1];
-  double mass = 0.0;
-  for (std::size_t p = substrate.begin; p < substrate.end; ++p) mass += P.mass[p];
+  const double mass = sum_over(P.mass, substrate);
   const double bound = std::sqrt(2.0 * (1.0 + kEnergyGrowthLimit) * r.initial_total / mass);
   for (std::size_t p = substrate.begin; p < substrate.end; ++p) {
     P.velocity[2][p] = 1.5 * bound;
