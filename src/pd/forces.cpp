@@ -12,7 +12,7 @@ namespace coldspray::pd {
 
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
   const Neighbours& N = s.neighbours;
-  const ContactLaw& law = s.contact_law[N.body[i] * s.bodies.size() + N.body[j]];
+  const ContactLaw& law = contact_law_between(s, i, j);
   const Eigen::Vector3d r = (N.position[i] - N.position[j]).head<3>();
   const double length = r.norm();
   if (length >= law.reach || length == 0.0) return Eigen::Vector3d::Zero();

@@ -90,7 +90,7 @@ void check_initial_gap(const case_file::Case& c, const State& s) {
   for (std::size_t i = 0; i < N.real; ++i)
     for (std::size_t k = s.contact.begin[i]; k < s.contact.begin[i + 1]; ++k) {
       const std::size_t j = s.contact.other[k];
-      const ContactLaw& law = s.contact_law[N.body[i] * s.bodies.size() + N.body[j]];
+      const ContactLaw& law = contact_law_between(s, i, j);
       if (law.kind != ContactLaw::Kind::LennardJones) continue;
       const double r = (N.position[i] - N.position[j]).head<3>().norm();
       // Closer than both r_e and the cut-off: pushed apart at t = 0.

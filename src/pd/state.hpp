@@ -111,6 +111,11 @@ struct State : bodies::Bodies {
   double min_spacing = 0.0;             // the smallest body spacing, m (the time step's length)
 };
 
+// The contact law between points i and j (real or ghost) of different bodies.
+inline const ContactLaw& contact_law_between(const State& s, std::size_t i, std::size_t j) {
+  return s.contact_law[s.neighbours.body[i] * s.bodies.size() + s.neighbours.body[j]];
+}
+
 // The bond weights of body b's families (pd/deformation.hpp).
 inline BondWeights bond_weights(const State& s, std::size_t b) {
   return {s.settings.influence, s.body_bonds[b].horizon};
