@@ -811,6 +811,28 @@ def command_sweep(options):
     save_figure(fig, options.out, options.dpi)
 
 
+def command_bulk_fracture(options):
+    """The PD paper's Fig 1: the bulk-fracture test's force-stretch curve and eq 24 fitted to it
+    (coldspray bulk-fracture)."""
+    folder = require_dir(options.dir)
+    fit = read_json(os.path.join(folder, "fit.json"))
+    rows = read_csv_rows(os.path.join(folder, "bulk_fracture.csv"))
+    stretch = np.array([_to_float(r["stretch"]) for r in rows])
+    scale = fit["micromodulus"] * fit["critical_stretch"]  # c s_c: the bulk bond's peak
+    fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 3.8))
+    for column, style, label in (("bulk_force_density", "-", "bulk (critical stretch)"),
+                                 ("fitted_force_density", "--", "exponential (eq 24)")):
+        ax.plot(stretch / fit["critical_stretch"],
+                [_to_float(r[column]) / scale for r in rows], style, label=label)
+    ax.set_xlabel("stretch / critical stretch $s_c$")
+    ax.set_ylabel("force density / $c\\,s_c$")
+    ax.set_title(f"{fit['material']}: $s_c$ = {fit['critical_stretch']:.4g}, "
+                 f"$s_y$ = {fit['yield_stretch']:.4g}, m = {fit['softening']:.4g}")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save_figure(fig, options.out, options.dpi)
+
+
 PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
                     "critical_strain": (r"$\epsilon_c$", 1.0),
@@ -978,6 +1000,14 @@ def build_parser():
     sweep.add_argument("--dpi", type=int, default=150)
     sweep.add_argument("--out", required=True, help="PNG file to write")
     sweep.set_defaults(run=command_sweep)
+
+    bulk = commands.add_parser("bulk-fracture", help="contact model 2's bulk-fracture curve and "
+                                                     "its fit (coldspray bulk-fracture; PD Fig 1)")
+    bulk.add_argument("dir", help="bulk-fracture output folder (bulk_fracture.csv, fit.json)")
+    bulk.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    bulk.add_argument("--dpi", type=int, default=150)
+    bulk.add_argument("--out", required=True, help="PNG file to write")
+    bulk.set_defaults(run=command_bulk_fracture)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

@@ -101,9 +101,10 @@ struct Solver {
 enum class ContactNormal { MaxGradient, Body, HighestId };
 
 // The force law between points of different bodies in peridynamics (docs/pd.md, "Contact"): the
-// short-range repulsion (its constants under `peridynamics`), or the PD paper's contact model 1,
-// a Lennard-Jones-type potential (eqs 15-22). The MPM's grid contact has no law to choose.
-enum class ContactModel { Repulsive, LennardJones };
+// short-range repulsion (its constants under `peridynamics`), the PD paper's contact model 1,
+// a Lennard-Jones-type potential (eqs 15-22), or its model 2, interface bonds with the bulk's
+// softening force-stretch law (eqs 23-25). The MPM's grid contact has no law to choose.
+enum class ContactModel { Repulsive, LennardJones, InterfaceBonds };
 
 struct Contact {
   ContactModel model = ContactModel::Repulsive;
@@ -116,6 +117,13 @@ struct Contact {
   std::optional<double> alpha;       // J
   double repulsion_exponent = 12.0;  // m
   double attraction_exponent = 6.0;  // n
+  // Contact model 2 (PD paper eqs 23-25): the interface's fracture energy G_c, J/m^2, unset the
+  // sum of the two materials' surface energies (the work of separating the metallic bond); the
+  // critical stretch follows by eq 23, and the yield stretch s_y and softening m, unset, by the
+  // fit of eq 24 to the bulk-fracture test (pd/bulk_fracture.hpp).
+  std::optional<double> fracture_energy;
+  std::optional<double> yield_stretch;  // s_y
+  std::optional<double> softening;      // m
   ContactNormal normal = ContactNormal::MaxGradient;
   std::string normal_body;  // with ContactNormal::Body
   double friction = 0.0;    // Coulomb coefficient; 0 = frictionless

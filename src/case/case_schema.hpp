@@ -51,8 +51,10 @@ inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingMod
                                                              {"strain", BondingModel::Strain},
                                                              {"energy", BondingModel::Energy}}}};
 
-inline constexpr Names<ContactModel, 2> kContactModelNames{
-    {{{"repulsive", ContactModel::Repulsive}, {"lennard-jones", ContactModel::LennardJones}}}};
+inline constexpr Names<ContactModel, 3> kContactModelNames{
+    {{{"repulsive", ContactModel::Repulsive},
+      {"lennard-jones", ContactModel::LennardJones},
+      {"interface-bonds", ContactModel::InterfaceBonds}}}};
 
 inline constexpr Names<NodalAverage, 2> kNodalAverageNames{
     {{{"count", NodalAverage::Count}, {"weight", NodalAverage::Weight}}}};
@@ -151,6 +153,10 @@ void fields(IO& io, Contact& c) {
               kPositive);
   io.check(c.repulsion_exponent > c.attraction_exponent, "repulsion_exponent",
            "must exceed attraction_exponent (the repulsion must win at short range)");
+  io.quantity("fracture_energy", c.fracture_energy, units::kEnergyPerArea, kOptional, kPositive);
+  io.quantity("yield_stretch", c.yield_stretch, units::kDimensionless, kOptional,
+              Range{0.0, 1.0, true, true});
+  io.quantity("softening", c.softening, units::kDimensionless, kOptional, kPositive);
   io.scalar("normal", c, ContactNormalText{}, kOptional);
   io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
   io.scalar("gap_check", c.gap_check, Flag{}, kOptional);

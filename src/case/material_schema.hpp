@@ -14,9 +14,9 @@
 namespace coldspray::case_file {
 
 // The top-level groups of a material; `sources:` gives the provenance of each.
-inline constexpr std::array<std::string_view, 9> kMaterialGroups{
-    "density", "elastic",       "strength",       "shear_modulus_model", "melt",
-    "eos",     "specific_heat", "taylor_quinney", "thermal_conductivity"};
+inline constexpr std::array<std::string_view, 10> kMaterialGroups{
+    "density", "elastic",       "strength",       "shear_modulus_model",  "melt",
+    "eos",     "specific_heat", "taylor_quinney", "thermal_conductivity", "surface_energy"};
 
 inline constexpr std::array<std::string_view, 4> kStrengthModels{"elastic", "von-mises",
                                                                  "johnson-cook", "ptw"};
@@ -139,6 +139,7 @@ void fields(IO& io, materials::Material& m) {
               kUnitInterval);
   io.quantity("thermal_conductivity", m.thermal.conductivity, units::kThermalConductivity,
               kOptional, kNonNegative);
+  io.quantity("surface_energy", m.surface_energy, units::kEnergyPerArea, kOptional, kNonNegative);
   io.table("sources", m.sources, Keywords{kMaterialGroups}, Text{});
 }
 

@@ -181,6 +181,10 @@ GeneratedCase peridynamics_impact_case(const ImpactSpec& spec) {
     line("  model: lennard-jones   # the PD paper's contact model 1 (eqs 15-22)");
     if (spec.beta) line("  beta: " + number(*spec.beta));
   }
+  if (spec.contact == "interface-bonds") {
+    line("contact:");
+    line("  model: interface-bonds   # the PD paper's contact model 2 (eqs 23-25)");
+  }
   line("solver:");
   line("  method: peridynamics");
   line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));

@@ -53,9 +53,10 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
       ->check(CLI::IsMember({"quarter", "none"}))
       ->capture_default_str();
   sub.add_option("--contact", o.contact,
-                 "Peridynamics: repulsive, or lennard-jones (the PD paper's contact model 1; "
-                 "the particle starts a cut-off above the substrate)")
-      ->check(CLI::IsMember({"repulsive", "lennard-jones"}))
+                 "Peridynamics: repulsive, lennard-jones (the PD paper's contact model 1; "
+                 "the particle starts a cut-off above the substrate) or interface-bonds (its "
+                 "model 2)")
+      ->check(CLI::IsMember({"repulsive", "lennard-jones", "interface-bonds"}))
       ->capture_default_str();
   sub.add_option("--beta", o.beta, "Peridynamics, lennard-jones: the adhesion parameter beta");
   sub.add_option("--bonding", o.bonding,

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   cli::add_check(app);
   cli::add_materials(app);
   cli::add_material_test(app);
+  cli::add_bulk_fracture(app);
   cli::add_sweep(app);
   cli::add_vcrit(app);
   cli::add_calibrate(app);

@@ -107,6 +107,9 @@ struct Material {
   melt::Model melt;
   eos::Model eos;
   Thermal thermal;
+  // The solid's surface energy gamma, J/m^2 (0: not given): contact model 2 takes the interface's
+  // fracture energy as gamma_a + gamma_b, the work of separating a metallic bond.
+  double surface_energy = 0.0;
   // Where each group's numbers come from, by group name ("strength", "eos", ...).
   std::map<std::string, std::string> sources;
 };

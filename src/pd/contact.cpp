@@ -15,6 +15,11 @@ bool ContactList::stale(const Neighbours& P) const {
 
 void ContactList::build(const Neighbours& P, double reach) {
   const std::size_t n = P.size();
+  if (remembers_stretch) {
+    previous_begin.swap(begin);
+    previous_other.swap(other);
+    previous_largest.swap(largest_stretch);
+  }
   built_at = P.position;
   ++builds;
   // Cells `reach` wide over the points' bounding box.
@@ -65,6 +70,21 @@ void ContactList::build(const Neighbours& P, double reach) {
         }
     std::sort(other.begin() + static_cast<long>(first), other.end());
     begin[p + 1] = other.size();
+  }
+  if (remembers_stretch) carry_over_largest_stretch();
+}
+
+// Both lists of a point are sorted: one merge pass finds the pairs they share.
+void ContactList::carry_over_largest_stretch() {
+  largest_stretch.assign(other.size(), kUnbonded);
+  if (previous_begin.empty()) return;
+  for (std::size_t p = 0; p + 1 < begin.size(); ++p) {
+    std::size_t old = previous_begin[p];
+    for (std::size_t c = begin[p]; c < begin[p + 1]; ++c) {
+      while (old < previous_begin[p + 1] && previous_other[old] < other[c]) ++old;
+      if (old < previous_begin[p + 1] && previous_other[old] == other[c])
+        largest_stretch[c] = previous_largest[old];
+    }
   }
 }
 

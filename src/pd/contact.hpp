@@ -8,8 +8,9 @@
 // stretched (its largest hole, at a cube's centre, is 0.87 h from the corners at rest), and 0.9
 // of the initial distance lets bodies start closer than that without a push. The pairs are found in
 // the current configuration with a cell list, kept with a skin and rebuilt once some point has
-// moved half the skin since the last build. The PD paper's contact model 1 (pd/lennard_jones.hpp)
-// is another force law on these same pairs; model 2 will be a third.
+// moved half the skin since the last build. The PD paper's contact models 1 (pd/lennard_jones.hpp)
+// and 2 (pd/interface_bonds.hpp) are other force laws on these same pairs; model 2's bonds keep
+// their largest stretch beside the list, carried over when it is rebuilt.
 #pragma once
 
 #include <array>
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pd/interface_bonds.hpp"
 #include "pd/lennard_jones.hpp"
 #include "pd/neighbours.hpp"
 
@@ -27,24 +29,37 @@ struct ContactList {
   std::vector<std::size_t> begin;         // point i's candidates: [begin[i], begin[i + 1])
   std::vector<std::uint32_t> other;       // candidate points of other bodies, ascending
   std::vector<Eigen::Vector4d> built_at;  // the positions at the last build, m
+  // Per candidate, contact model 2's largest stretch since its bond formed (kUnbonded if none);
+  // kept, and carried over by build(), only when `remembers_stretch`.
+  bool remembers_stretch = false;
+  std::vector<double> largest_stretch;
   // Scratch of the builds, kept so that rebuilding allocates only when the list grows.
   std::vector<std::size_t> cell_start, cell_cursor;
   std::vector<std::uint32_t> cell_order, cell_of;
+  std::vector<std::size_t> previous_begin;
+  std::vector<std::uint32_t> previous_other;
+  std::vector<double> previous_largest;
   long builds = 0;
 
   // Whether some point (real or ghost) has moved more than half the skin since the last build.
   bool stale(const Neighbours& N) const;
   // Finds, for every real point, the points (real or ghost) of other bodies within reach = max
-  // contact distance + skin (a cell list of cells `reach` wide over all of them).
+  // contact distance + skin (a cell list of cells `reach` wide over all of them). A pair that was
+  // a candidate before keeps its largest stretch; a new one starts unbonded. The reach must cover
+  // every bond's break distance, so that no bond is dropped.
   void build(const Neighbours& N, double reach);
+
+ private:
+  void carry_over_largest_stretch();
 };
 
 // The contact force law between points i and j (of different bodies), reaching `reach`.
 // Repulsive: contact distance d = min(distance, initial_fraction |X_i - X_j|), constant k_c c /
 // delta in N/m^7 (see above). Lennard-Jones (model 1): the pair's alpha is alpha_per_volumes V_i
-// V_j (eq 22), or alpha itself when the case gives it (alpha_per_volumes = 0).
+// V_j (eq 22), or alpha itself when the case gives it (alpha_per_volumes = 0). Interface bonds
+// (model 2): rest length d as the repulsion's, micromodulus c = 18 K / (pi delta^4) in N/m^6.
 struct ContactLaw {
-  enum class Kind { Repulsive, LennardJones };
+  enum class Kind { Repulsive, LennardJones, InterfaceBonds };
   Kind kind = Kind::Repulsive;
   double reach = 0.0;             // m: no force beyond
   double distance = 0.0;          // m
@@ -53,6 +68,8 @@ struct ContactLaw {
   LennardJones lennard_jones;
   double alpha_per_volumes = 0.0;  // J/m^6
   double alpha = 0.0;              // J
+  InterfaceBondLaw interface;
+  double micromodulus = 0.0;  // N/m^6
 };
 
 }  // namespace coldspray::pd

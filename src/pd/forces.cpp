@@ -5,13 +5,19 @@
 
 #include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
+#include "pd/interface_bonds.hpp"
 #include "pd/quadratic_fit.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
 
-Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
+double contact_distance(const ContactLaw& law, const Neighbours& N, std::size_t i, std::size_t j) {
+  return std::min(law.distance, law.initial_fraction * (N.reference[i] - N.reference[j]).norm());
+}
+
+Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t candidate) {
   const Neighbours& N = s.neighbours;
+  const std::size_t j = s.contact.other[candidate];
   const ContactLaw& law = contact_law_between(s, i, j);
   const Eigen::Vector3d r = (N.position[i] - N.position[j]).head<3>();
   const double length = r.norm();
@@ -22,8 +28,13 @@ Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t j) {
                                                                : law.alpha / N.volume[i];
     return alpha_over_V_i * force_per_alpha(law.lennard_jones, length) / length * r;
   }
-  const double d =
-      std::min(law.distance, law.initial_fraction * (N.reference[i] - N.reference[j]).norm());
+  const double d = contact_distance(law, N, i, j);
+  if (law.kind == ContactLaw::Kind::InterfaceBonds) {
+    // Eqs 24-25: c f(s) V_j along the pair, with the bond's largest stretch.
+    const double f = force_per_micromodulus(law.interface, length / d - 1.0,
+                                            s.contact.largest_stretch[candidate]);
+    return law.micromodulus * f * N.volume[j] / length * r;
+  }
   if (length >= d) return Eigen::Vector3d::Zero();
   return law.stiffness * (d - length) * N.volume[j] / length * r;
 }
@@ -87,7 +98,7 @@ ForceDensity force_density(const State& s, std::size_t i) {
 Eigen::Vector3d contact_density(const State& s, std::size_t i) {
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
   for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c)
-    contact += contact_force(s, i, s.contact.other[c]);
+    contact += contact_force(s, i, c);
   return contact;
 }
 

@@ -11,6 +11,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "case/key_locations.hpp"
 #include "core/error.hpp"
+#include "pd/bulk_fracture.hpp"
 #include "pd/control_length.hpp"
 #include "pd/deformation.hpp"
 #include "pd/pair_forces.hpp"
@@ -56,10 +57,32 @@ void invert_moments(const case_file::Case& c, State& s) {
   }
 }
 
+// Contact model 2's law between bodies a and b (pd/interface_bonds.hpp): s_c from the interface's
+// fracture energy by eq 23, and s_y and m, unless the case gives them, from the fit of eq 24 to
+// the bulk-fracture test (pd/bulk_fracture.hpp), which is in units of s_c.
+InterfaceBondLaw interface_bond_law(const case_file::Case& c, const State& s, std::size_t a,
+                                    std::size_t b, double K, double delta) {
+  const case_file::Contact& contact = c.contact;
+  const double gamma_a = s.bodies[a].material.surface_energy;
+  const double gamma_b = s.bodies[b].material.surface_energy;
+  if (!contact.fracture_energy && (gamma_a <= 0.0 || gamma_b <= 0.0))
+    case_file::fail_at(c, "contact.fracture_energy",
+                       fmt::format("contact model 2 needs the interface's fracture energy: give "
+                                   "contact.fracture_energy, or a surface_energy to materials "
+                                   "'{}' and '{}' (then G_c = gamma_a + gamma_b)",
+                                   s.bodies[a].material.name, s.bodies[b].material.name));
+  const double G_c = contact.fracture_energy.value_or(gamma_a + gamma_b);
+  const double s_c = critical_stretch(G_c, K, delta);
+  const InterfaceBondLaw fit = scaled_law(
+      fit_interface_law(bulk_fracture_curve(s.settings.horizon_factor, kBulkFractureSamples)), s_c);
+  return {contact.yield_stretch.value_or(fit.yield_stretch),
+          contact.softening.value_or(fit.softening)};
+}
+
 // The law between bodies a and b (pd/contact.hpp): lengths from the finer spacing, constants
 // from the softer material and the larger horizon, the same both ways.
-ContactLaw contact_law(const case_file::Contact& contact, const State& s, std::size_t a,
-                       std::size_t b) {
+ContactLaw contact_law(const case_file::Case& c, const State& s, std::size_t a, std::size_t b) {
+  const case_file::Contact& contact = c.contact;
   const double delta = std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon);
   const double K = std::min(s.bodies[a].material.elastic.bulk_modulus,
                             s.bodies[b].material.elastic.bulk_modulus);
@@ -79,6 +102,13 @@ ContactLaw contact_law(const case_file::Contact& contact, const State& s, std::s
   const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
   law.distance = law.reach = s.settings.contact_distance * spacing;
   law.initial_fraction = s.settings.contact_initial_fraction;
+  if (contact.model == case_file::ContactModel::InterfaceBonds) {
+    law.kind = ContactLaw::Kind::InterfaceBonds;
+    law.micromodulus = micromodulus;
+    law.interface = interface_bond_law(c, s, a, b, K, delta);
+    law.reach = law.distance * (1.0 + law.interface.break_stretch());
+    return law;
+  }
   law.stiffness = s.settings.contact_stiffness * micromodulus / delta;
   return law;
 }
@@ -194,10 +224,11 @@ State build_state(const case_file::Case& c) {
   double reach = 0.0;
   for (std::size_t a = 0; a < m; ++a)
     for (std::size_t b = 0; b < m; ++b) {
-      s.contact_law.push_back(contact_law(c.contact, s, a, b));
+      s.contact_law.push_back(contact_law(c, s, a, b));
       reach = std::max(reach, s.contact_law.back().reach);
     }
   s.contact.skin = 0.5 * s.min_spacing;
+  s.contact.remembers_stretch = c.contact.model == case_file::ContactModel::InterfaceBonds;
   s.contact.build(N, reach + s.contact.skin);
   check_initial_gap(c, s);
   return s;

@@ -179,6 +179,24 @@ void book_works(State& s) {
       a.absorbed -= s.external_force[d][a.point] * P.velocity[d][a.point] * s.dt;
 }
 
+// Contact model 2 (pd/interface_bonds.hpp): each candidate pair's bond forms, remembers its
+// largest stretch or breaks, at the step's new positions, before the forces read it.
+void update_interface_bonds(State& s) {
+  if (!s.contact.remembers_stretch) return;
+  const Neighbours& N = s.neighbours;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < N.real; ++i)
+    for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
+      const std::size_t j = s.contact.other[c];
+      const ContactLaw& law = contact_law_between(s, i, j);
+      if (law.kind != ContactLaw::Kind::InterfaceBonds) continue;
+      const double r = (N.position[i] - N.position[j]).head<3>().norm();
+      double& largest = s.contact.largest_stretch[c];
+      largest =
+          next_largest_stretch(law.interface, r / contact_distance(law, N, i, j) - 1.0, largest);
+    }
+}
+
 // The impulse between each pair of bodies over the step (contact.csv), summed over the contact
 // pairs in point order.
 void sum_contact_impulses(State& s) {
@@ -187,7 +205,7 @@ void sum_contact_impulses(State& s) {
   for (std::size_t i = 0; i < s.points.size(); ++i)
     for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
       const std::size_t j = s.contact.other[c];
-      const Eigen::Vector3d f = contact_force(s, i, j) * (s.points.volume0[i] * s.dt);
+      const Eigen::Vector3d f = contact_force(s, i, c) * (s.points.volume0[i] * s.dt);
       auto& impulse = s.contact_impulse[s.points.body[i] * m + s.neighbours.body[j]];
       for (int d = 0; d < 3; ++d) impulse[d] += f[d];
     }
@@ -208,6 +226,7 @@ void step(State& s) {
     for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.reach);
     s.contact.build(s.neighbours, reach + s.contact.skin);
   }
+  update_interface_bonds(s);
   s.max_signal_speed = update_stress(s);
   bodies::raise_recorded_fault(s);
   refresh_ghost_tensors(s);

@@ -93,6 +93,25 @@ TEST(SolverSections, ContactModelOneParametersAreChecked) {
   EXPECT_EQ(c.contact.cutoff, 2.75);
 }
 
+TEST(SolverSections, ContactModelTwoParametersAreChecked) {
+  const std::string spheres = "verification/pd-elastic-spheres.yaml";
+  expect_error("al-14um-810.yaml", {{"contact.model", "interface-bonds"}}, "contact.model",
+               "is peridynamics only");
+  for (const char* s_y : {"0", "-0.001", "1"})
+    expect_error(spheres, {{"contact.yield_stretch", s_y}}, "contact.yield_stretch",
+                 "must be in (0, 1)");
+  expect_error(spheres, {{"contact.softening", "0"}}, "contact.softening", "must be > 0");
+  expect_error(spheres, {{"contact.fracture_energy", "0 J/m^2"}}, "contact.fracture_energy",
+               "must be > 0");
+  const Case c = load_case(example(spheres), {{"contact.model", "interface-bonds"},
+                                              {"contact.fracture_energy", "2 J/m^2"},
+                                              {"contact.softening", "300"}});
+  EXPECT_EQ(c.contact.model, ContactModel::InterfaceBonds);
+  EXPECT_EQ(c.contact.fracture_energy, 2.0);
+  EXPECT_EQ(c.contact.softening, 300.0);
+  EXPECT_FALSE(c.contact.yield_stretch);
+}
+
 TEST(SolverSections, RollerFacesArePeridynamicsOnly) {
   expect_error("al-14um-810.yaml", {{"bodies.substrate.roller", "[side]"}},
                "bodies.substrate.roller", "is peridynamics only");

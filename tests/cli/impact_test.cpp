@@ -201,6 +201,19 @@ TEST(Impact, ContactModelOneRefusesBodiesCloserThanItsEquilibrium) {
       << r.output;
 }
 
+// Model 2 takes the interface's G_c from the materials' surface energies: a material without one
+// needs contact.fracture_energy.
+TEST(Impact, ContactModelTwoNeedsAFractureEnergy) {
+  const std::string dir = make_temp_dir("impact");
+  const auto r = run_coldspray(
+      "run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+          "/examples/verification/pd-elastic-wave.yaml' --set contact.model=interface-bonds",
+      dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("contact.fracture_energy"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'elastic-al'"), std::string::npos) << r.output;
+}
+
 TEST(Impact, SolverOptionsThatDoNotFitAreBadInput) {
   const std::string pd = "impact --solver peridynamics --diameter 10um --velocity 500m/s";
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{

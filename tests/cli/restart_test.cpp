@@ -132,6 +132,15 @@ TEST(Restart, PeridynamicsWithFlowControlAndContactIsBitIdentical) {
       "--threads 2");  // the tests run on one thread: the bits do not depend on the threads
 }
 
+TEST(Restart, PeridynamicsWithInterfaceBondsIsBitIdentical) {
+  // Contact model 2's bonds remember their largest stretch: the checkpoint carries it.
+  expect_restart_bit_identical(
+      kExamples + "pd-quarter-impact.yaml",
+      "--set symmetry.x=0um --set symmetry.y=0um --set contact.model=interface-bonds "
+      "--set solver.end_time=6ns --set output.checkpoint_interval=2ns "
+      "--set output.snapshot_interval=1ns");
+}
+
 TEST(Restart, RefusesOverridesAndMissingCheckpoints) {
   const fs::path dir = make_temp_dir();
   const auto empty = run_coldspray("run --restart '" + dir.string() + "'");

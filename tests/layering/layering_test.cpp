@@ -27,7 +27,7 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"checkpoint", {"core", "io", "bodies", "mpm", "pd"}},
     {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm", "pd", "checkpoint"}},
     {"studies", {"core", "case", "io", "run"}},
-    {"cli", {"core", "case", "io", "material_test", "mpm", "run", "studies"}},
+    {"cli", {"core", "case", "io", "material_test", "mpm", "pd", "run", "studies"}},
 };
 
 // The folder of a line `#include "folder/file.hpp"`, or "" for any other line. (Not std::regex:

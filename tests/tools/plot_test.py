@@ -353,6 +353,15 @@ class PlotToolTest(unittest.TestCase):
             self.run_tool("sweep", folder, "--x", "contact.beta", "--y", "particle.v_rest",
                           "--out", missing), missing, "particle.v_rest")
 
+    def test_bulk_fracture_draws_the_bulk_curve_and_its_fit(self):
+        folder = write_bulk_fracture(self.out("bulk-fracture"))
+        path = self.out("bulk-fracture.png")
+        self.assert_png(self.run_tool("bulk-fracture", folder, "--out", path), path)
+        os.remove(os.path.join(folder, "fit.json"))
+        missing = self.out("bulk-fracture-missing.png")
+        self.assert_failed_without_png(self.run_tool("bulk-fracture", folder, "--out", missing),
+                                       missing, "fit.json")
+
     def test_calibration_draws_verdicts_or_tolerances(self):
         for by in ("verdict", "cor-pbcp"):
             folder = write_calibration(self.out("calibration-" + by), by)
@@ -366,6 +375,19 @@ def write_sweep(folder):
     with open(os.path.join(folder, "sweep.csv"), "w") as f:
         f.write("case,status,contact.beta,particle.cor\n"
                 "case_0001,ok,0.002,0.08\ncase_0002,failed,0.004,nan\ncase_0003,ok,0.005,0.0\n")
+    return folder
+
+
+def write_bulk_fracture(folder):
+    """A bulk-fracture folder as src/cli/bulk_fracture.cpp writes it: s_c = 0.002, c = 1e33."""
+    import json
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "bulk_fracture.csv"), "w") as f:
+        f.write("stretch,bulk_force_density,fitted_force_density\n"
+                "0,0,0\n0.002,2e30,2e30\n0.004,5e29,8e29\n0.008,0,1e29\n")
+    with open(os.path.join(folder, "fit.json"), "w") as f:
+        json.dump({"material": "cu-jc", "micromodulus": 1e33, "critical_stretch": 0.002,
+                   "yield_stretch": 0.002, "softening": 300.0}, f)
     return folder
 
 
