@@ -833,6 +833,31 @@ def command_bulk_fracture(options):
     save_figure(fig, options.out, options.dpi)
 
 
+def command_pull_off(options):
+    """The PD paper's Fig 11(b): force across the interface against the grip's displacement,
+    one line per pull-off folder (coldspray pull-off), its peak marked."""
+    folders = [require_dir(d) for d in options.dirs]
+    labels = options.labels.split(",") if options.labels else [os.path.basename(
+        os.path.normpath(d)) for d in folders]
+    if len(labels) != len(folders):
+        raise PlotError(f"--labels has {len(labels)} labels for {len(folders)} folders")
+    fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 3.8))
+    for k, folder in enumerate(folders):
+        summary = read_json(os.path.join(folder, "summary.json"))
+        rows = read_csv_rows(os.path.join(folder, "pull_off.csv"))
+        ax.plot([_to_float(r["displacement"]) * 1e6 for r in rows],
+                [_to_float(r["force"]) for r in rows], "-", color=f"C{k}",
+                label=f"{labels[k]}: peak {summary['peak_force']:.3g} N, "
+                      f"{summary['strength_projected'] * 1e-6:.3g} MPa (projected)")
+        ax.plot(summary["peak_displacement"] * 1e6, summary["peak_force"], "o", color=f"C{k}")
+    ax.axhline(0.0, color="k", lw=0.8)
+    ax.set_xlabel("grip displacement (um)")
+    ax.set_ylabel("force holding the splat (N)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small")
+    save_figure(fig, options.out, options.dpi)
+
+
 PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
                     "critical_strain": (r"$\epsilon_c$", 1.0),
@@ -1008,6 +1033,16 @@ def build_parser():
     bulk.add_argument("--dpi", type=int, default=150)
     bulk.add_argument("--out", required=True, help="PNG file to write")
     bulk.set_defaults(run=command_bulk_fracture)
+
+    pull = commands.add_parser("pull-off", help="force against displacement of pull-off tests "
+                                                "(coldspray pull-off; PD Fig 11b)")
+    pull.add_argument("dirs", nargs="+", help="pull-off output folders (summary.json, "
+                                              "pull_off.csv), overlaid")
+    pull.add_argument("--labels", help="legend labels, comma-separated (default folder names)")
+    pull.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
+    pull.add_argument("--dpi", type=int, default=150)
+    pull.add_argument("--out", required=True, help="PNG file to write")
+    pull.set_defaults(run=command_pull_off)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

@@ -206,6 +206,19 @@ struct Symmetry {
   friend bool operator==(const Symmetry&, const Symmetry&) = default;
 };
 
+// A rigid grip (peridynamics; the pull-off test, docs/pull-off.md): at t = 0 every point is set
+// at rest, and the points of `body` in the last `fraction` of its extent along `velocity` are
+// gripped: they move at `velocity` from then on, whatever the forces on them, reaching it
+// smoothly over `ramp` ((1 - cos(pi t / ramp)) / 2), so that starting sends no stress wave.
+struct Grip {
+  std::string body;
+  double fraction = 0.5;
+  Vec3 velocity = Vec3::Zero();  // m/s
+  double ramp = 0.0;             // s
+
+  friend bool operator==(const Grip&, const Grip&) = default;
+};
+
 struct Probe {
   std::string name;
   Vec3 position = Vec3::Zero();
@@ -256,6 +269,7 @@ struct Case {
   Solver solver;
   std::optional<Peridynamics> peridynamics;
   std::optional<Symmetry> symmetry;
+  std::optional<Grip> grip;
   Contact contact;
   Bonding bonding;
   ImpactMetrics metrics;

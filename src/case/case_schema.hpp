@@ -199,6 +199,15 @@ void fields(IO& io, Peridynamics& p) {
 }
 
 template <class IO>
+void fields(IO& io, Grip& g) {
+  io.scalar("body", g.body, Text{}, kRequired);
+  io.quantity("fraction", g.fraction, units::kDimensionless, kOptional, kFraction);
+  io.vector("velocity", g.velocity, units::kVelocity, kRequired);
+  io.check(g.velocity.norm() > 0.0, "velocity", "must not be zero: the grip pulls at it");
+  io.quantity("ramp", g.ramp, units::kTime, kOptional, kNonNegative);
+}
+
+template <class IO>
 void fields(IO& io, Symmetry& s) {
   io.quantity("x", s.x, units::kLength, kOptional);
   io.quantity("y", s.y, units::kLength, kOptional);
@@ -248,6 +257,7 @@ void fields(IO& io, Case& c) {
   io.section("solver", c.solver, kRequired);
   io.section("peridynamics", c.peridynamics, kOptional);
   io.section("symmetry", c.symmetry, kOptional);
+  io.section("grip", c.grip, kOptional);
   io.section("contact", c.contact, kOptional);
   io.section("bonding", c.bonding, kOptional);
   io.section("metrics", c.metrics, kOptional);

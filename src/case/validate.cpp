@@ -21,6 +21,16 @@ void check_contact_body(const Document& doc, const Case& c) {
   fail_at(doc, {"contact", "normal"}, unknown_word("body", c.contact.normal_body, names));
 }
 
+void check_grip_body(const Document& doc, const Case& c) {
+  if (!c.grip) return;
+  std::vector<std::string_view> names;
+  for (const Body& b : c.bodies) {
+    if (b.name == c.grip->body) return;
+    names.push_back(b.name);
+  }
+  fail_at(doc, {"grip", "body"}, unknown_word("body", c.grip->body, names));
+}
+
 void check_spacing(const Document& doc, const Grid& grid, const Body& b) {
   if (b.spacing <= grid.cell_size) return;
   fail_at(doc, {"bodies", b.name, "spacing"},
@@ -42,6 +52,8 @@ void check_solver_sections(const Document& doc, const Case& c) {
         if (!b.roller.empty())
           fail_at(doc, {"bodies", b.name, "roller"},
                   "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
+      if (c.grip)
+        fail_at(doc, {"grip"}, "is peridynamics only (the MPM's pull-off test is issue 26)");
       if (c.contact.model != ContactModel::Repulsive)
         fail_at(doc, {"contact", "model"},
                 "is peridynamics only: the MPM's grid contact has no force law to choose");
@@ -87,6 +99,7 @@ void check_axisymmetric(const Document& doc, const Body& b) {
 
 void check_consistency(const Document& doc, const Case& c) {
   check_contact_body(doc, c);
+  check_grip_body(doc, c);
   check_solver_sections(doc, c);
   if (c.solver.geometry == Geometry::ThreeD && c.grid && c.grid->min && c.grid->max &&
       (*c.grid->min)[1] >= (*c.grid->max)[1])

@@ -67,6 +67,7 @@ void fields(Archive& a, pd::State& s) {
   a("pd/contact/begin", s.contact.begin), a("pd/contact/other", s.contact.other);
   a("pd/contact/built_at", s.contact.built_at), a("pd/contact/builds", s.contact.builds);
   a("pd/contact/largest_stretch", s.contact.largest_stretch);
+  a("pd/gripped", s.gripped);
 }
 
 }  // namespace coldspray::checkpoint

@@ -11,6 +11,7 @@ void add_check(CLI::App& app);
 void add_materials(CLI::App& app);
 void add_material_test(CLI::App& app);
 void add_bulk_fracture(CLI::App& app);
+void add_pull_off(CLI::App& app);
 void add_sweep(CLI::App& app);
 void add_impact(CLI::App& app);
 void add_vcrit(CLI::App& app);

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   cli::add_materials(app);
   cli::add_material_test(app);
   cli::add_bulk_fracture(app);
+  cli::add_pull_off(app);
   cli::add_sweep(app);
   cli::add_vcrit(app);
   cli::add_calibrate(app);

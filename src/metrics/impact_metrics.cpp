@@ -55,6 +55,14 @@ RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body) {
   return out;
 }
 
+double touching_area(const bodies::Bodies& s, std::size_t body) {
+  const bodies::BodyRange& r = s.bodies[body];
+  double area = 0.0;
+  for (std::size_t p = r.begin; p < r.end; ++p)
+    if (s.points.touching[p]) area += point_area(s, p);
+  return area * whole_body_factor(s, r);
+}
+
 ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   const bodies::Points& P = s.points;
   const bodies::BodyRange& r = s.bodies[body];

@@ -49,4 +49,8 @@ struct RestAndBond {
 
 RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body);
 
+// The surface area of the body's points that another body acts on now (bodies::Points::touching),
+// for the whole body (symmetry planes counted), m^2.
+double touching_area(const bodies::Bodies& s, std::size_t body);
+
 }  // namespace coldspray::metrics

@@ -208,6 +208,8 @@ State build_state(const case_file::Case& c) {
   }
 
   s.held.assign(n, 0);
+  s.gripped.assign(n, 0);
+  if (c.grip) s.grip_velocity = c.grip->velocity, s.grip_ramp = c.grip->ramp;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
     for (const case_file::BodyFace face : c.bodies[b].roller) {

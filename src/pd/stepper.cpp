@@ -13,6 +13,7 @@
 #include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
+#include "pd/grip.hpp"
 #include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
@@ -24,14 +25,21 @@ namespace {
 
 // v += dt/2 a at every point. A held component stays at zero; the kinetic energy a hold takes
 // (once, when a moving face is first held) goes to the budget's contact entry, as the MPM books
-// the velocity corrections of its contact and held nodes.
-void kick(State& s) {
+// the velocity corrections of its contact and held nodes. A gripped point moves at the grip's
+// velocity (pd/grip.hpp); the kinetic energy its ramp gives goes to the same entry.
+void kick(State& s, double t) {
   bodies::Points& P = s.points;
   const double half = 0.5 * s.dt;
+  const Eigen::Vector3d grip = grip_velocity_at(s, t);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < P.size(); ++i)
     for (int d = 0; d < 3; ++d) {
-      if (s.held[i] >> d & 1) {
+      if (s.gripped[i]) {
+        // The grip's work in speeding its points up along its ramp.
+        P.contact_work[i] +=
+            0.5 * P.mass[i] * (grip[d] * grip[d] - P.velocity[d][i] * P.velocity[d][i]);
+        P.velocity[d][i] = grip[d];
+      } else if (s.held[i] >> d & 1) {
         P.contact_work[i] -= 0.5 * P.mass[i] * P.velocity[d][i] * P.velocity[d][i];
         P.velocity[d][i] = 0.0;
       } else {
@@ -129,8 +137,8 @@ double update_stress(State& s) {
 
 // a = f / rho0 at every point (the bonds' and the control's rate from the pairs,
 // pd/pair_forces.hpp, the control's force advanced by its rate over the step that moved the
-// points, and the contacts'), with the absorbing faces' dashpots (thesis eqs 3.45-3.46) and held
-// points at rest.
+// points, and the contacts'), with the absorbing faces' dashpots (thesis eqs 3.45-3.46), held
+// points at rest and gripped points unaccelerated: the grip's force cancels the others.
 void accelerate(State& s) {
   bodies::Points& P = s.points;
   pair_forces(s);
@@ -149,6 +157,11 @@ void accelerate(State& s) {
     P.touched[i] |= P.touching[i];
     const double rho0 = s.bodies[P.body[i]].material.density;
     for (int d = 0; d < 3; ++d) s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : total[d] / rho0;
+    if (s.gripped[i])
+      for (int d = 0; d < 3; ++d) {
+        s.external_force[d][i] = -total[d] * P.volume0[i];
+        s.acceleration[d][i] = 0.0;
+      }
   }
   for (bodies::AbsorbingPoint& a : s.absorbing)
     for (int d = 0; d < 3; ++d) {
@@ -173,6 +186,10 @@ void book_works(State& s) {
     }
     P.viscous_work[i] -= control * P.volume0[i] * s.dt;
     P.contact_work[i] += contact * P.volume0[i] * s.dt;
+    // The grip's work, which the budget books with the holds' (pd/grip.hpp).
+    if (s.gripped[i])
+      for (int d = 0; d < 3; ++d)
+        P.contact_work[i] += s.external_force[d][i] * P.velocity[d][i] * s.dt;
   }
   for (bodies::AbsorbingPoint& a : s.absorbing)
     for (int d = 0; d < 3; ++d)
@@ -218,8 +235,8 @@ double stable_time_step(const State& s, double cfl) {
 }
 
 void step(State& s) {
-  kick(s);   // v^{n+1/2}
-  drift(s);  // x^{n+1}
+  kick(s, s.time + 0.5 * s.dt);  // v^{n+1/2}
+  drift(s);                      // x^{n+1}
   refresh_neighbours(s);
   if (s.contact.stale(s.neighbours)) {
     double reach = 0.0;
@@ -230,8 +247,8 @@ void step(State& s) {
   s.max_signal_speed = update_stress(s);
   bodies::raise_recorded_fault(s);
   refresh_ghost_tensors(s);
-  accelerate(s);  // a^{n+1}
-  kick(s);        // v^{n+1}
+  accelerate(s);           // a^{n+1}
+  kick(s, s.time + s.dt);  // v^{n+1}
   book_works(s);
   sum_contact_impulses(s);
   s.time += s.dt;

@@ -14,8 +14,8 @@
 
 namespace coldspray::run {
 
-// The checkpoint format this build writes and reads.
-inline constexpr int kCheckpointFormat = 1;
+// The checkpoint format this build writes and reads. 2: PD's contact model 2 bonds and grip.
+inline constexpr int kCheckpointFormat = 2;
 
 // Writes the checkpoint of `s` (with `rec`'s and `rule`'s progress) into rec's folder, keeping
 // the last CheckpointPolicy::keep() of them; returns its path.

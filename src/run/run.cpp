@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "mpm/stepper.hpp"
+#include "pd/grip.hpp"
 #include "pd/stepper.hpp"
 #include "run/checkpoints.hpp"
 #include "run/interrupt.hpp"
@@ -84,6 +85,13 @@ void checkpoint_now(State& s, Recorder& rec, StepRule& rule, double wall, bool a
   }
 }
 
+// A case with a grip (pd/grip.hpp) starts at rest with its grip taken, from its own initial state
+// or a checkpoint's; validation refuses a grip with the MPM.
+void take_grip(pd::State& s, const case_file::Case& c) {
+  if (c.grip) pd::take_grip(s, *c.grip);
+}
+void take_grip(mpm::State&, const case_file::Case&) {}
+
 }  // namespace
 
 Summary run_case(const case_file::Case& c, const RunOptions& options) {
@@ -101,6 +109,7 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
           return run_to_end(s, rule, rec, options.progress);
         }
         if (!options.initial_state.empty()) load_initial_state(options.initial_state, s);
+        take_grip(s, c);
         Recorder rec(c, s, options.out_dir);
         rec.checkpoints().enable();
         rec.start(s);

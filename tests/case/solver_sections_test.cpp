@@ -112,6 +112,28 @@ TEST(SolverSections, ContactModelTwoParametersAreChecked) {
   EXPECT_FALSE(c.contact.yield_stretch);
 }
 
+TEST(SolverSections, TheGripIsChecked) {
+  const std::string spheres = "verification/pd-elastic-spheres.yaml";
+  const Override velocity{"grip.velocity", "[0, 0, 1 m/s]"};
+  const InputError mpm = input_error([&] {
+    load_case(example("al-14um-810.yaml"), {{"grip.body", "particle"}, velocity});
+  });
+  EXPECT_EQ(mpm.key(), "grip");
+  EXPECT_TRUE(contains(mpm.message(), "is peridynamics only")) << mpm.message();
+  expect_error(spheres, {{"grip.body", "middle"}, velocity}, "grip.body", "upper");
+  expect_error(spheres, {{"grip.body", "upper"}, {"grip.velocity", "[0, 0, 0 m/s]"}},
+               "grip.velocity", "must not be zero");
+  expect_error(spheres, {{"grip.body", "upper"}, velocity, {"grip.fraction", "0"}}, "grip.fraction",
+               "must be in (0, 1]");
+  expect_error(spheres, {{"grip.body", "upper"}, velocity, {"grip.ramp", "-1 ns"}}, "grip.ramp",
+               "must be >= 0");
+  const Case c = load_case(example(spheres), {{"grip.body", "upper"}, velocity});
+  ASSERT_TRUE(c.grip);
+  EXPECT_EQ(c.grip->body, "upper");
+  EXPECT_EQ(c.grip->fraction, 0.5);
+  EXPECT_EQ(c.grip->velocity.z(), 1.0);
+}
+
 TEST(SolverSections, RollerFacesArePeridynamicsOnly) {
   expect_error("al-14um-810.yaml", {{"bodies.substrate.roller", "[side]"}},
                "bodies.substrate.roller", "is peridynamics only");

@@ -362,6 +362,15 @@ class PlotToolTest(unittest.TestCase):
         self.assert_failed_without_png(self.run_tool("bulk-fracture", folder, "--out", missing),
                                        missing, "fit.json")
 
+    def test_pull_off_draws_force_against_displacement(self):
+        folder = write_pull_off(self.out("pull-off"))
+        path = self.out("pull-off.png")
+        self.assert_png(self.run_tool("pull-off", folder, folder, "--labels", "a,b",
+                                      "--out", path), path)
+        wrong = self.out("pull-off-labels.png")
+        self.assert_failed_without_png(self.run_tool("pull-off", folder, "--labels", "a,b",
+                                                     "--out", wrong), wrong, "--labels")
+
     def test_calibration_draws_verdicts_or_tolerances(self):
         for by in ("verdict", "cor-pbcp"):
             folder = write_calibration(self.out("calibration-" + by), by)
@@ -388,6 +397,18 @@ def write_bulk_fracture(folder):
     with open(os.path.join(folder, "fit.json"), "w") as f:
         json.dump({"material": "cu-jc", "micromodulus": 1e33, "critical_stretch": 0.002,
                    "yield_stretch": 0.002, "softening": 300.0}, f)
+    return folder
+
+
+def write_pull_off(folder):
+    """A pull-off folder as src/studies/pull_off.cpp writes it."""
+    import json
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "pull_off.csv"), "w") as f:
+        f.write("displacement,force\n0,0\n1e-9,0.5e-3\n2e-9,0.7e-3\n3e-9,0.1e-3\n4e-9,0\n")
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        json.dump({"peak_force": 0.7e-3, "peak_displacement": 2e-9,
+                   "strength_projected": 1.4e7}, f)
     return folder
 
 

@@ -1,0 +1,157 @@
+#include "studies/pull_off.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_columns.hpp"
+#include "run/checkpoints.hpp"
+#include "run/interface_areas.hpp"
+#include "run/run.hpp"
+
+namespace coldspray::studies {
+namespace {
+
+// The grip reaches its speed over this share of the run (pd/grip.hpp's ramp): long against the
+// time a wave takes to cross a splat, so that the start sends none through it.
+constexpr double kRampShare = 0.2;
+
+// The force has fallen back to this share of its peak: the splat has let go.
+constexpr double kSeparatedShare = 0.01;
+
+std::size_t gripped_body(const case_file::Case& c, const PullOffOptions& o) {
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    if (!o.body.empty() ? c.bodies[b].name == o.body : c.bodies[b].velocity.norm() > 0.0) return b;
+  }
+  if (!o.body.empty())
+    throw InputError("--body", "", fmt::format("no body '{}' in {}", o.body, o.impact.string()));
+  throw InputError(o.impact.string(), "",
+                   "has no body that moved at t = 0 to pull off: name it with --body");
+}
+
+// The pull's direction: away from the substrate, against the body's impact velocity (+z if it
+// had none), or, in shear, along x.
+Eigen::Vector3d pull_direction(const case_file::Case& c, std::size_t body,
+                               const PullOffOptions& o) {
+  if (o.shear) {
+    if (c.symmetry && c.symmetry->x)
+      throw InputError("--direction", "",
+                       "shear pulls along x, across the impact's symmetry plane x = " +
+                           fmt::format("{:g}", *c.symmetry->x * 1e6) +
+                           " um: pull off a whole model (impact --symmetry none)");
+    return Eigen::Vector3d::UnitX();
+  }
+  const Eigen::Vector3d v0 = c.bodies[body].velocity;
+  // (0 - v: no negative zeros in summary.json.)
+  return v0.norm() > 0.0 ? Eigen::Vector3d(Eigen::Vector3d::Zero() - v0.normalized())
+                         : Eigen::Vector3d::UnitZ();
+}
+
+// From the modelled part to the whole: 2 per symmetry plane the pull lies in (the force across
+// the interface is the same on both sides of it).
+double whole_factor(const case_file::Case& c, const Eigen::Vector3d& direction) {
+  double factor = 1.0;
+  if (c.symmetry && c.symmetry->x && direction.x() == 0.0) factor *= 2.0;
+  if (c.symmetry && c.symmetry->y && direction.y() == 0.0) factor *= 2.0;
+  return factor;
+}
+
+// The grip's travel at time t: the integral of its ramped speed (pd/grip.hpp).
+double grip_travel(double speed, double ramp, double t) {
+  if (t >= ramp) return speed * (t - 0.5 * ramp);
+  return speed *
+         (0.5 * t - ramp / (2.0 * std::numbers::pi) * std::sin(std::numbers::pi * t / ramp));
+}
+
+void write_results(const PullOffOptions& o, const PullOffResult& r, const std::string& body,
+                   const Eigen::Vector3d& direction) {
+  io::write_atomically(o.out / "pull_off.csv", [&](std::ostream& out) {
+    out << "displacement,force\n";
+    for (std::size_t k = 0; k < r.force.size(); ++k)
+      out << fmt::format("{:.10g},{:.10g}\n", r.displacement[k], r.force[k]);
+  });
+  nlohmann::ordered_json j;
+  j["impact"] = o.impact.string();
+  j["body"] = body;
+  j["direction"] = {direction.x(), direction.y(), direction.z()};
+  j["speed"] = o.speed;
+  j["peak_force"] = r.peak_force;
+  j["peak_displacement"] = r.peak_displacement;
+  j["work_of_separation"] = r.work;
+  j["final_force"] = r.final_force;
+  j["separated"] = r.separated;
+  j["bonded_area"] = r.bonded_area;
+  j["projected_area"] = r.projected_area;
+  j["strength_bonded"] = r.bonded_area > 0.0 ? r.peak_force / r.bonded_area : 0.0;
+  j["strength_projected"] = r.projected_area > 0.0 ? r.peak_force / r.projected_area : 0.0;
+  io::write_atomically(o.out / "summary.json",
+                       [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+}  // namespace
+
+PullOffResult pull_off(const PullOffOptions& o) {
+  const std::filesystem::path checkpoint = run::find_checkpoint(o.impact);
+  case_file::Case c = run::checkpoint_case(checkpoint);
+  if (c.solver.method != case_file::Method::Peridynamics)
+    throw InputError(o.impact.string(), "",
+                     "is an MPM result: the pull-off test takes peridynamics results (the MPM's "
+                     "is issue 26)");
+  if (!(o.speed > 0.0)) throw InputError("--speed", "", "must be positive");
+  if (!(o.fraction > 0.0 && o.fraction <= 1.0)) throw InputError("--grip", "", "must be in (0, 1]");
+  const std::size_t body = gripped_body(c, o);
+  const Eigen::Vector3d direction = pull_direction(c, body, o);
+  const double distance = o.distance > 0.0 ? o.distance : 3.0 * c.bodies[body].spacing;
+  const double duration = distance / o.speed;
+
+  // The pull: the impact's case from its checkpoint's state, at rest, gripped.
+  c.name += "-pull-off";
+  for (case_file::Body& b : c.bodies) b.velocity.setZero();
+  c.grip =
+      case_file::Grip{c.bodies[body].name, o.fraction, o.speed * direction, kRampShare * duration};
+  c.solver.end_time = duration;
+  c.output.history_interval = duration / 1000.0;
+  c.output.snapshot_interval = duration / 4.0;
+  c.output.checkpoint_interval = 0.0;
+  c.output.probes.clear();
+  c.metrics.verdict_extensions = 0;
+
+  PullOffResult r;
+  const run::InterfaceAreas areas =
+      run::interface_areas(run::checkpoint_case(checkpoint), checkpoint, body);
+  r.bonded_area = areas.bonded;
+  r.projected_area = areas.projected;
+  run::run_case(c, {o.out / "run", o.progress, {}, checkpoint});
+
+  // The force on the body from the others along the pull, with its sign turned: positive holds
+  // it back.
+  const std::string name = c.bodies[body].name;
+  const auto columns = io::read_csv_columns(
+      o.out / "run" / "history.csv",
+      {"time", name + ".contact_fx", name + ".contact_fy", name + ".contact_fz"});
+  const double factor = whole_factor(c, direction);
+  for (std::size_t k = 0; k < columns[0].size(); ++k) {
+    const Eigen::Vector3d f(columns[1][k], columns[2][k], columns[3][k]);
+    r.displacement.push_back(grip_travel(o.speed, c.grip->ramp, columns[0][k]));
+    r.force.push_back(-factor * f.dot(direction));
+  }
+  const auto peak = std::max_element(r.force.begin(), r.force.end());
+  r.peak_force = *peak;
+  r.peak_displacement = r.displacement[static_cast<std::size_t>(peak - r.force.begin())];
+  // The work done against the adhesion: over where the force holds the body back (an impact's
+  // splat may start pressed on, pushing the grip before it pulls).
+  for (std::size_t k = 1; k < r.force.size(); ++k)
+    r.work += 0.5 * (std::max(r.force[k], 0.0) + std::max(r.force[k - 1], 0.0)) *
+              (r.displacement[k] - r.displacement[k - 1]);
+  r.final_force = r.force.back();
+  r.separated = r.peak_force > 0.0 && std::abs(r.final_force) <= kSeparatedShare * r.peak_force;
+  write_results(o, r, name, direction);
+  return r;
+}
+
+}  // namespace coldspray::studies
