@@ -95,6 +95,21 @@ ForceDensity force_density(const State& s, std::size_t i) {
   return {bonds.head<3>(), stabilising.head<3>(), contact_density(s, i)};
 }
 
+std::uint16_t adhesive_partner(const State& s, std::size_t i) {
+  const Neighbours& N = s.neighbours;
+  for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
+    const std::size_t j = s.contact.other[c];
+    const ContactLaw& law = contact_law_between(s, i, j);
+    const bool holds =
+        law.kind == ContactLaw::Kind::InterfaceBonds
+            ? s.contact.largest_stretch[c] >= 0.0
+            : law.kind == ContactLaw::Kind::LennardJones &&
+                  (N.position[i] - N.position[j]).head<3>().squaredNorm() < law.reach * law.reach;
+    if (holds) return static_cast<std::uint16_t>(1 + N.body[j]);
+  }
+  return 0;
+}
+
 Eigen::Vector3d contact_density(const State& s, std::size_t i) {
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
   for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c)

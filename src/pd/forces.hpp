@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 
 #include "pd/state.hpp"
 
@@ -46,6 +47,11 @@ double contact_distance(const ContactLaw& law, const Neighbours& N, std::size_t 
 // The contact force density on i from the `candidate`-th point of its contact list, by the law
 // between their bodies (pd/contact.hpp), N/m^3: zero beyond the law's reach.
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t candidate);
+
+// 1 + the body whose point holds i through an adhesive contact law, 0 if none (bodies::Points::
+// bonded_to): with model 1, a point of another body within its cut-off; with model 2, an interface
+// bond that has formed and not broken. The repulsion holds nothing.
+std::uint16_t adhesive_partner(const State& s, std::size_t i);
 
 // The sum of the contact forces on i from the points of other bodies in its contact list, N/m^3.
 Eigen::Vector3d contact_density(const State& s, std::size_t i);

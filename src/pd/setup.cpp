@@ -231,6 +231,8 @@ State build_state(const case_file::Case& c) {
     }
   s.contact.skin = 0.5 * s.min_spacing;
   s.contact.remembers_stretch = c.contact.model == case_file::ContactModel::InterfaceBonds;
+  // An adhesive contact can hold a body: the verdict then reads the area it holds.
+  s.bonding = c.contact.model != case_file::ContactModel::Repulsive;
   s.contact.build(N, reach + s.contact.skin);
   check_initial_gap(c, s);
   return s;

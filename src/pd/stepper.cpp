@@ -155,6 +155,8 @@ void accelerate(State& s) {
     // The points another body pushes on: the contact area of the impact metrics.
     P.touching[i] = f.contact.squaredNorm() > 0.0;
     P.touched[i] |= P.touching[i];
+    // The points an adhesive contact holds: the bonded area of the verdict (metrics/verdict.hpp).
+    if (s.bonding) P.bonded_to[i] = adhesive_partner(s, i);
     const double rho0 = s.bodies[P.body[i]].material.density;
     for (int d = 0; d < 3; ++d) s.acceleration[d][i] = (s.held[i] >> d & 1) ? 0.0 : total[d] / rho0;
     if (s.gripped[i])

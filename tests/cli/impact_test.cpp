@@ -8,6 +8,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -212,6 +213,26 @@ TEST(Impact, ContactModelTwoNeedsAFractureEnergy) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("contact.fracture_energy"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'elastic-al'"), std::string::npos) << r.output;
+}
+
+// In peridynamics an adhesive contact decides the verdict: the bonded area is what it holds. The
+// blocks of tests/data/cli/pd-bonded-blocks.yaml settle onto each other at 0.01 m/s: held by
+// contact model 2's 36 bonds (36 um^2), bonded; with the repulsion alone, nothing holds them.
+TEST(Impact, AnAdhesiveContactDecidesThePeridynamicVerdict) {
+  const std::string dir = make_temp_dir("impact");
+  const std::string run = "run '" + std::string(COLDSPRAY_TEST_DATA) +
+                          "/cli/pd-bonded-blocks.yaml' --quiet --set solver.end_time=4ns "
+                          "--set metrics.verdict_window=2ns";
+  for (const auto& [model, outcome, area] :
+       std::vector<std::tuple<std::string, std::string, double>>{
+           {"interface-bonds", "bonded", 36e-12}, {"repulsive", "rebounded", 0.0}}) {
+    const auto r = run_coldspray(run + " --out " + model + " --set contact.model=" + model, dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::ifstream in(fs::path(dir) / model / "summary.json");
+    const nlohmann::json block = nlohmann::json::parse(in)["bodies"]["block"];
+    EXPECT_EQ(block["verdict"]["outcome"], outcome) << model;
+    EXPECT_NEAR(block["bonded_area"].get<double>(), area, 1e-6 * 36e-12) << model;
+  }
 }
 
 TEST(Impact, SolverOptionsThatDoNotFitAreBadInput) {
