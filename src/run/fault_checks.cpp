@@ -37,9 +37,9 @@ void check_budget_is_finite(const bodies::Bodies& s, const metrics::EnergyBudget
 }
 
 // Nothing in a case drives a body: held faces do no work (their velocity is zero), dashpots only
-// take energy, contact and bonds pass it between bodies or dissipate it, and neither solver
-// prescribes a motion; an adhesive contact's well gives out what it has taken in, the energy
-// its attraction released so far (FaultChecks::check adds it to E0). So no body's kinetic energy
+// take energy, contact and bonds pass it between bodies or dissipate it; an adhesive contact's
+// well gives out what it has taken in, the energy its attraction released so far, and a grip
+// what its work gave (FaultChecks::check adds either to E0). So no body's kinetic energy
 // can exceed the run's initial total E0 (by more than the budget's tolerance), and a body's mean
 // motion carries |p|^2 / 2M, no more than its points' kinetic energy (Cauchy-Schwarz; with ring
 // masses in r-z too). A body faster than sqrt(2 (1 + kEnergyGrowthLimit) E0 / M) has been driven by
@@ -74,11 +74,13 @@ void FaultChecks::check(const bodies::Bodies& s, const metrics::EnergyBudget& e)
   check_budget_is_finite(s, e);
   // A run that starts with no energy at all, bodies at rest, has no scale for the rest.
   if (initial_total_ <= 0.0) return;
-  // What an adhesive well has released: minus the budget's contact entry (the work done against
-  // the contact forces) where it is negative. It may drive the bodies, and the budget's error
-  // scales with the energy that flows, so it widens both bounds.
-  const double released = adhesive_ ? std::max(0.0, -e.contact) : 0.0;
-  check_mean_velocities(s, initial_total_, (1.0 + kEnergyGrowthLimit) * initial_total_ + released);
+  // What an adhesive well has released or a grip given: minus the budget's contact entry (the
+  // work done against the contact forces and by the grip) where it is negative. It may drive the
+  // bodies, and the budget's error scales with the energy that flows, so it widens both bounds
+  // by the budget's tolerance on it too (a body a grip drags carries just what the grip gave).
+  const double released = driven_ ? std::max(0.0, -e.contact) : 0.0;
+  check_mean_velocities(s, initial_total_,
+                        (1.0 + kEnergyGrowthLimit) * (initial_total_ + released));
   const double allowed =
       (1.0 + kEnergyGrowthLimit) * initial_total_ + kEnergyGrowthLimit * released;
   // The total with every term signed as it is: a term that went wrong in sign (absorbed, below)

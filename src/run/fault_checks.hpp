@@ -25,11 +25,12 @@ inline constexpr double kEnergyGrowthLimit = 0.2;
 
 class FaultChecks {
  public:
-  // `initial_total`: the run's total energy at t = 0 (kinetic + internal). `adhesive`: the
-  // contact has an attractive well (the PD paper's contact model 1), whose depth the bodies may
-  // turn into motion.
-  explicit FaultChecks(double initial_total, bool adhesive = false)
-      : initial_total_(initial_total), adhesive_(adhesive) {}
+  // `initial_total`: the run's total energy at t = 0 (kinetic + internal). `driven`: energy may
+  // enter the bodies through the budget's contact entry: an adhesive contact's well (the PD
+  // paper's contact models), whose depth the bodies may turn into motion, or a grip that moves a
+  // body (pd/grip.hpp).
+  explicit FaultChecks(double initial_total, bool driven = false)
+      : initial_total_(initial_total), driven_(driven) {}
 
   double initial_total() const { return initial_total_; }
 
@@ -44,7 +45,7 @@ class FaultChecks {
 
  private:
   double initial_total_;
-  bool adhesive_;
+  bool driven_;
 };
 
 }  // namespace coldspray::run

@@ -68,6 +68,29 @@ TEST(PullOff, TheBondedBlocksNeedTheForceAndWorkOfTheirInterfaceBonds) {
   EXPECT_EQ(curve.rows.back()[curve.column("force")], 0.0);
 }
 
+// Shear pushes along x: the blocks (no symmetry plane) take it; a quarter model, whose plane x = 0
+// would mirror the push, is refused.
+TEST(PullOff, ShearPushesAlongXOnWholeModelsOnly) {
+  const fs::path dir = make_temp_dir("pull-off");
+  ASSERT_EQ(run_coldspray("run '" + kBlocks + "' --out blocks --quiet", dir.string()).status, 0);
+  const auto r = run_coldspray(
+      "pull-off blocks --direction shear --speed 1m/s --distance 0.05um --quiet", dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json s = read_json(dir / "blocks-pull-off" / "summary.json");
+  EXPECT_EQ(s["direction"], nlohmann::json::array({1.0, 0.0, 0.0}));
+  const auto quarter = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                                         "/examples/verification/pd-quarter-impact.yaml' --out "
+                                         "quarter --quiet --set solver.end_time=0.5ns "
+                                         "--set symmetry.x=0um --set symmetry.y=0um",
+                                     dir.string());
+  ASSERT_EQ(quarter.status, 0) << quarter.output;
+  const auto refused = run_coldspray("pull-off quarter --direction shear", dir.string());
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--direction"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("symmetry plane x = 0"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(dir / "quarter-pull-off"));
+}
+
 TEST(PullOff, RefusesAFolderWithoutACheckpoint) {
   const fs::path dir = make_temp_dir("pull-off");
   fs::create_directories(dir / "empty");
