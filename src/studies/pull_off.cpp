@@ -97,7 +97,8 @@ void write_results(const PullOffOptions& o, const PullOffResult& r, const std::s
 
 PullOffResult pull_off(const PullOffOptions& o) {
   const std::filesystem::path checkpoint = run::find_checkpoint(o.impact);
-  case_file::Case c = run::checkpoint_case(checkpoint);
+  const case_file::Case impact = run::checkpoint_case(checkpoint);
+  case_file::Case c = impact;
   if (c.solver.method != case_file::Method::Peridynamics)
     throw InputError(o.impact.string(), "",
                      "is an MPM result: the pull-off test takes peridynamics results (the MPM's "
@@ -122,8 +123,7 @@ PullOffResult pull_off(const PullOffOptions& o) {
   c.metrics.verdict_extensions = 0;
 
   PullOffResult r;
-  const run::InterfaceAreas areas =
-      run::interface_areas(run::checkpoint_case(checkpoint), checkpoint, body);
+  const run::InterfaceAreas areas = run::interface_areas(impact, checkpoint, body);
   r.bonded_area = areas.bonded;
   r.projected_area = areas.projected;
   run::run_case(c, {o.out / "run", o.progress, {}, checkpoint});
