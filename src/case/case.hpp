@@ -94,6 +94,10 @@ struct Solver {
   // Fourier heat conduction between points, with the materials' thermal_conductivity
   // (docs/mpm.md); off, every point heats adiabatically (thesis §3.5.3).
   bool heat_conduction = false;
+  // End the run one verdict window after its moving bodies last felt a contact force while
+  // moving away (run/step_rule.hpp, docs/bonding.md "Stopping once separated"): free, a body's
+  // momentum no longer changes, so its rebound speed is final.
+  bool stop_when_separated = false;
 
   friend bool operator==(const Solver&, const Solver&) = default;
 };

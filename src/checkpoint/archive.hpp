@@ -57,6 +57,11 @@ class CheckpointWriter {
     file_.write(name, values.empty() ? nullptr : values.front().data(), values.size(), N);
   }
   void operator()(const std::string& name, std::string& text) { file_.write_string(name, text); }
+  // A field that checkpoints of earlier versions lack (CheckpointReader::optional).
+  template <Number T>
+  void optional(const std::string& name, T& value) {
+    (*this)(name, value);
+  }
 
  private:
   io::Hdf5File& file_;
@@ -95,6 +100,11 @@ class CheckpointReader {
     file_.read(name, values.empty() ? nullptr : values.front().data(), values.size(), N);
   }
   void operator()(const std::string& name, std::string& text) { text = file_.read_string(name); }
+  // Read if the checkpoint has it; else `value` keeps what it holds.
+  template <Number T>
+  void optional(const std::string& name, T& value) {
+    if (file_.has(name)) (*this)(name, value);
+  }
 
  private:
   const io::Hdf5File& file_;

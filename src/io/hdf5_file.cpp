@@ -68,11 +68,13 @@ void Hdf5File::write_raw(const std::string& name, hid_t type, const void* data, 
 }
 
 hid_t Hdf5File::open_dataset(const std::string& name) const {
-  const hid_t set = H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0
-                        ? H5Dopen2(file_, name.c_str(), H5P_DEFAULT)
-                        : -1;
+  const hid_t set = has(name) ? H5Dopen2(file_, name.c_str(), H5P_DEFAULT) : -1;
   if (set < 0) throw InputError(path_.string(), name, "missing from the checkpoint");
   return set;
+}
+
+bool Hdf5File::has(const std::string& name) const {
+  return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
 }
 
 std::size_t Hdf5File::rows(const std::string& name) const {

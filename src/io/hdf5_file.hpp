@@ -48,6 +48,8 @@ class Hdf5File {
   void read(const std::string& name, T* data, std::size_t rows, std::size_t columns = 1) const {
     read_raw(name, hdf5_type<T>(), data, rows, columns);
   }
+  // Whether the file holds a dataset of that name.
+  bool has(const std::string& name) const;
   // The number of rows of a dataset.
   std::size_t rows(const std::string& name) const;
 

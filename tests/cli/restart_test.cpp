@@ -77,19 +77,20 @@ std::vector<fs::path> checkpoints(const fs::path& run) {
 }
 
 // Runs `case_file` with `sets` to its end in `whole`; copies the finished folder and restarts
-// the copy from its first checkpoint (so that its tables and snapshots hold rows and files past
-// the checkpoint, which the restart must cut and write again); compares the two.
+// the copy from its checkpoint number `from` (the first by default; so that its tables and
+// snapshots hold rows and files past the checkpoint, which the restart must cut and write
+// again); compares the two.
 void expect_restart_bit_identical(const std::string& case_file, const std::string& sets,
-                                  const std::string& restart_flags = "") {
+                                  const std::string& restart_flags = "", std::size_t from = 0) {
   const fs::path dir = make_temp_dir();
   const fs::path whole = dir / "whole", copy = dir / "copy";
   const auto r = run_coldspray("run '" + case_file + "' --quiet --out '" + whole.string() +
                                "' --set output.checkpoint_keep=10 " + sets);
   ASSERT_EQ(r.status, 0) << r.output;
   const std::vector<fs::path> written = checkpoints(whole);
-  ASSERT_GE(written.size(), 3u) << "a mid-run checkpoint and the last one";
+  ASSERT_GE(written.size(), from + 3) << "mid-run checkpoints and the last one";
   fs::copy(whole, copy, fs::copy_options::recursive);
-  const fs::path first = copy / "checkpoints" / written.front().filename();
+  const fs::path first = copy / "checkpoints" / written[from].filename();
   const auto restarted =
       run_coldspray("run --quiet --restart '" + first.string() + "' " + restart_flags);
   ASSERT_EQ(restarted.status, 0) << restarted.output;
@@ -139,6 +140,16 @@ TEST(Restart, PeridynamicsWithInterfaceBondsIsBitIdentical) {
       "--set symmetry.x=0um --set symmetry.y=0um --set contact.model=interface-bonds "
       "--set solver.end_time=6ns --set output.checkpoint_interval=2ns "
       "--set output.snapshot_interval=1ns");
+}
+
+TEST(Restart, PeridynamicsStoppingOnceSeparatedIsBitIdentical) {
+  // The particle is free and leaving from 26.3 ns, so the run ends at 46.3 ns; the restart from
+  // the checkpoint at 27 ns must end there too, not a window after its own first free step.
+  expect_restart_bit_identical(
+      kExamples + "pd-quarter-impact.yaml",
+      "--set solver.end_time=60ns --set solver.stop_when_separated=true "
+      "--set output.checkpoint_interval=13.5ns --set output.snapshot_interval=10ns",
+      "", /*from=*/1);
 }
 
 TEST(Restart, RefusesOverridesAndMissingCheckpoints) {
