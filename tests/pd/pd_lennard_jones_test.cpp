@@ -61,5 +61,48 @@ TEST(LennardJones, OtherExponentsKeepTheirEquilibriumAndStiffness) {
   EXPECT_NEAR(alpha_per_volumes(lj, K, delta) * slope, -c, 1e-5 * c);
 }
 
+// The work of adhesion per unit area of two flat, aligned simple-cubic half-lattices of spacing
+// h at r0 = 1.1 h, alpha from eq 22 with Cu's K = 129 GPa and delta = 3 h: W = -min over the gap
+// of the pairs' energy phi(r) - phi(R_c) per area. Reference: tools/lj_adhesion_work.py (numpy,
+// its own sums and minimiser) gives 57.3 and 176.2 J/m^2 at beta 0.003 and 0.0035 for h = 1.2
+// um (docs/validation/pd-adhesion.md). Everything scales with h and alpha with K h^3, so W is
+// proportional to h: half the spacing, half the work.
+double aligned_work_of_adhesion(double beta, double h) {
+  const double K = 129e9;
+  const LennardJones lj{1.1 * h, beta, 12.0, 6.0, 2.75 * 1.1 * h};
+  const double alpha = alpha_per_volumes(lj, K, 3.0 * h) * std::pow(h, 6);
+  const int n = static_cast<int>(std::ceil(lj.cutoff / h)) + 1;
+  auto energy = [&](double gap) {
+    double sum = 0.0;
+    for (int i = -n; i <= n; ++i)
+      for (int j = -n; j <= n; ++j)
+        for (int k = 0; k <= 2 * n; ++k) {  // k = k_a + k_b: k + 1 pairs of layers
+          const double r = std::sqrt((i * i + j * j) * h * h + std::pow(gap + k * h, 2));
+          if (r < lj.cutoff)
+            sum += (k + 1) * (potential_per_alpha(lj, r) - potential_per_alpha(lj, lj.cutoff));
+        }
+    return alpha * sum / (h * h);
+  };
+  // A scan, then golden sections about its lowest point.
+  const double first = 0.3 * h, step = (lj.cutoff - first) / 400;
+  double best = first;
+  for (int k = 1; k <= 400; ++k)
+    if (energy(first + k * step) < energy(best)) best = first + k * step;
+  double a = best - step, b = best + step;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int k = 0; k < 60; ++k) {
+    const double c = b - golden * (b - a), d = a + golden * (b - a);
+    (energy(c) < energy(d) ? b : a) = energy(c) < energy(d) ? d : c;
+  }
+  return -std::min(0.0, energy(0.5 * (a + b)));
+}
+
+TEST(LennardJones, WorkOfAdhesionPerAreaGrowsWithTheSpacing) {
+  EXPECT_NEAR(aligned_work_of_adhesion(0.003, 1.2e-6), 57.3, 0.002 * 57.3);
+  EXPECT_NEAR(aligned_work_of_adhesion(0.0035, 1.2e-6), 176.2, 0.002 * 176.2);
+  EXPECT_NEAR(aligned_work_of_adhesion(0.0035, 0.6e-6),
+              0.5 * aligned_work_of_adhesion(0.0035, 1.2e-6), 1e-9 * 175.3);
+}
+
 }  // namespace
 }  // namespace coldspray::pd
