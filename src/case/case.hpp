@@ -94,10 +94,6 @@ struct Solver {
   // Fourier heat conduction between points, with the materials' thermal_conductivity
   // (docs/mpm.md); off, every point heats adiabatically (thesis §3.5.3).
   bool heat_conduction = false;
-  // End the run one verdict window after its moving bodies last felt a contact force while
-  // moving away (run/step_rule.hpp, docs/bonding.md "Stopping once separated"): free, a body's
-  // momentum no longer changes, so its rebound speed is final.
-  bool stop_when_separated = false;
 
   friend bool operator==(const Solver&, const Solver&) = default;
 };
@@ -196,6 +192,9 @@ struct Peridynamics {
   double contact_distance = 1.35;
   double contact_initial_fraction = 0.9;
   double contact_stiffness = 15.0;
+  // Bodies whose stable step is shorter than the largest body's take several steps of their own
+  // per step of it (pd/stepper.hpp, docs/pd.md "Subcycling"): bodies share no bonds, only contact.
+  bool subcycling = false;
 
   friend bool operator==(const Peridynamics&, const Peridynamics&) = default;
 };

@@ -137,7 +137,6 @@ void fields(IO& io, Solver& s) {
   io.quantity("dt_scale", s.dt_scale, units::kDimensionless, kOptional, kFraction);
   io.section("artificial_viscosity", s.artificial_viscosity, kOptional);
   io.scalar("heat_conduction", s.heat_conduction, Flag{}, kOptional);
-  io.scalar("stop_when_separated", s.stop_when_separated, Flag{}, kOptional);
 }
 
 template <class IO>
@@ -197,6 +196,7 @@ void fields(IO& io, Peridynamics& p) {
               kOptional, kFraction);
   io.quantity("contact_stiffness", p.contact_stiffness, units::kDimensionless, kOptional,
               kNonNegative);
+  io.scalar("subcycling", p.subcycling, Flag{}, kOptional);
 }
 
 template <class IO>

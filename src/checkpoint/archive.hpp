@@ -58,7 +58,7 @@ class CheckpointWriter {
   }
   void operator()(const std::string& name, std::string& text) { file_.write_string(name, text); }
   // A field that checkpoints of earlier versions lack (CheckpointReader::optional).
-  template <Number T>
+  template <class T>
   void optional(const std::string& name, T& value) {
     (*this)(name, value);
   }
@@ -101,7 +101,7 @@ class CheckpointReader {
   }
   void operator()(const std::string& name, std::string& text) { text = file_.read_string(name); }
   // Read if the checkpoint has it; else `value` keeps what it holds.
-  template <Number T>
+  template <class T>
   void optional(const std::string& name, T& value) {
     if (file_.has(name)) (*this)(name, value);
   }

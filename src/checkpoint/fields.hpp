@@ -68,6 +68,12 @@ void fields(Archive& a, pd::State& s) {
   a("pd/contact/built_at", s.contact.built_at), a("pd/contact/builds", s.contact.builds);
   a("pd/contact/largest_stretch", s.contact.largest_stretch);
   a("pd/gripped", s.gripped);
+  // Subcycling's: each body's signal speed, which sets its substeps, and the last contact force
+  // density, which a slow body's first kick takes. Absent from checkpoints before it
+  // (2026-12-05), whose runs read neither between steps.
+  a.optional("pd/body_signal_speed", s.body_signal_speed);
+  for (int d = 0; d < 3; ++d)
+    a.optional(std::string("pd/contact_force_") + "xyz"[d], s.contact_force[d]);
 }
 
 }  // namespace coldspray::checkpoint

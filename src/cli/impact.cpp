@@ -80,9 +80,6 @@ void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream
   if (s.extensions > 0)
     outcome += fmt::format(" after {} extension{} to {:.4g} ns", s.extensions,
                            s.extensions == 1 ? "" : "s", s.time * 1e9);
-  if (s.separated_since >= 0.0)
-    outcome += fmt::format(" at {:.4g} ns, free and leaving since {:.4g} ns", s.time * 1e9,
-                           s.separated_since * 1e9);
   std::string why =
       fmt::format("mean separation speed {} over the last {:.3g} ns, margin {}",
                   speed_text(v.separation_speed), v.window * 1e9, speed_text(v.margin));

@@ -139,6 +139,7 @@ void visit_slip_pairs(State& s, const BondWeights& weights, std::size_t first, s
 template <class Pass>
 void visit_block(State& s, std::size_t first, std::size_t end, Pass&& pass) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    if (!s.advancing[b]) continue;
     const std::size_t from = std::max(first, s.bodies[b].begin);
     const std::size_t to = std::min(end, s.bodies[b].end);
     if (from >= to) continue;
@@ -174,6 +175,7 @@ void pair_forces(State& s) {
   // (pd/deformation.hpp).
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    if (!s.advancing[s.neighbours.body[i]]) continue;
     s.pair_bonds[i] = s.piola_over_shape[i] * s.family_sums[i].bond;
     s.pair_control[i].setZero();
     if (along_flow) s.slip_fit[i].setZero();
@@ -188,7 +190,8 @@ void pair_forces(State& s) {
     // D = [sum omega (slip / 2) (x) q V_j] M^-1 (pd/quadratic_fit.hpp), then the second pass.
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i)
-      s.slip_fit[i] = s.slip_fit[i].lazyProduct(s.moment_inverse[i]).eval();
+      if (s.advancing[s.neighbours.body[i]])
+        s.slip_fit[i] = s.slip_fit[i].lazyProduct(s.moment_inverse[i]).eval();
     refresh_ghost_slip_fits(s);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < s.slip_fit.size(); ++i) s.slipped[i] = !s.slip_fit[i].isZero(0.0);
@@ -198,7 +201,8 @@ void pair_forces(State& s) {
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
-    s.pair_control[i] *= s.body_bonds[s.neighbours.body[i]].control;
+    if (s.advancing[s.neighbours.body[i]])
+      s.pair_control[i] *= s.body_bonds[s.neighbours.body[i]].control;
 }
 
 }  // namespace coldspray::pd

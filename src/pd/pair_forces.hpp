@@ -23,8 +23,9 @@ namespace coldspray::pd {
 // families are sorted), and the blocks' first points (the last entry the real count).
 PairSchedule pair_schedule(const Families& fam, std::size_t real);
 
-// s.pair_bonds and s.pair_control of every real point: eq 8's bond force density and the
-// control's, N/m^3, equal to force_density's bonds and control but for round-off.
+// s.pair_bonds and s.pair_control of every real point of the bodies the step advances
+// (State::advancing): eq 8's bond force density and the control's, N/m^3, equal to
+// force_density's bonds and control but for round-off.
 void pair_forces(State& s);
 
 }  // namespace coldspray::pd

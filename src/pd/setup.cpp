@@ -166,7 +166,19 @@ State build_state(const case_file::Case& c) {
     s.control_force[d].assign(n, 0.0);
     s.contact_force[d].assign(n, 0.0);
     s.external_force[d].assign(n, 0.0);
+    s.contact_kick[d].assign(n, 0.0);
   }
+  s.cfl = c.solver.cfl;
+  s.advancing.assign(s.bodies.size(), 1);
+  s.fast_bodies.assign(s.bodies.size(), 0);
+  s.body_signal_speed.assign(s.bodies.size(), 0.0);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (std::size_t i = s.bodies[b].begin; i < s.bodies[b].end; ++i) {
+      const double speed = std::sqrt(s.points.velocity[0][i] * s.points.velocity[0][i] +
+                                     s.points.velocity[1][i] * s.points.velocity[1][i] +
+                                     s.points.velocity[2][i] * s.points.velocity[2][i]);
+      s.body_signal_speed[b] = std::max(s.body_signal_speed[b], s.points.sound_speed[i] + speed);
+    }
 
   std::vector<double> horizons;
   s.min_spacing = s.bodies.front().spacing;

@@ -113,6 +113,18 @@ struct State : bodies::Bodies {
   ContactList contact;
   std::vector<ContactLaw> contact_law;  // per ordered body pair [a * bodies + b]
   double min_spacing = 0.0;             // the smallest body spacing, m (the time step's length)
+
+  // Per body, max over its points of (c + |v|) / min(1, lambda / 0.7) after its last stress
+  // update (pd/time_step.hpp), m/s: with its spacing, its own stable step.
+  std::vector<double> body_signal_speed;
+  // Subcycling (settings.subcycling, pd/stepper.hpp): solver.cfl, which sets each body's stable
+  // step; per body, whether the phase of the step under way advances it and whether it takes
+  // substeps; the contact impulse density a slow body's point takes in a kick, N s/m^3; and the
+  // substeps of the last step.
+  double cfl = 0.0;
+  std::vector<std::uint8_t> advancing, fast_bodies;
+  std::array<std::vector<double>, 3> contact_kick;
+  int substeps = 1;
 };
 
 // The contact law between points i and j (real or ghost) of different bodies.

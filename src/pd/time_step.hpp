@@ -24,6 +24,9 @@ namespace coldspray::pd {
 // Where the measured compressed bound, 3.7 lambda h / c, falls below the undeformed one, 2.6 h / c.
 inline constexpr double kStiffeningStretch = 0.7;
 
+// Subcycling (pd/stepper.hpp): a body takes at most this many steps per step of the largest.
+inline constexpr int kMaxSubsteps = 8;
+
 // A point crushed below this stretch stops the run (exit 3, with the point): the step, which
 // follows it, would fall a hundredfold and the run stall, where det F <= 0 is a fault already.
 inline constexpr double kCrushedStretch = 0.01;

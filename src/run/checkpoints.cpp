@@ -27,9 +27,6 @@ void all_fields(Archive& a, State& s, Recorder& rec, StepRule& rule) {
   rec.fields(a);
   a("rule/end", rule.end);
   a("rule/extensions_left", rule.extensions_left);
-  // Absent from the checkpoints of coldspray before 2026-12-05, which had no early end.
-  a.optional("rule/separated_since", rule.separated_since);
-  a.optional("rule/end_before_separation", rule.end_before_separation);
 }
 
 // What a restarted MPM run must size to the checkpoint's points: the step's scratch arrays

@@ -57,10 +57,6 @@ class Recorder {
   // a window because it was.
   bool undecided() const { return verdict_.undecided(); }
   void add_extension() { ++summary_.extensions; }
-  // Whether the moving bodies are free and leaving (VerdictSeries::separated).
-  bool separated(const bodies::Bodies& s) const { return verdict_.separated(s); }
-  // The time from which the run ended early (StepRule::separated_since), for the summary.
-  void set_separated_since(double time) { summary_.separated_since = time; }
   // Wall time spent on the run, and how many of its steps it shared with other runs.
   void add_wall(double seconds) { summary_.wall_seconds += seconds; }
   void add_shared_step() { ++summary_.shared_steps; }

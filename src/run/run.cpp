@@ -134,7 +134,6 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
     while (!rule.finished(s)) {
       advance(s, rule, resume);
       resume = ResumeAt::StepStart;
-      if (rule.stop_when_separated) rule.follow_separation(rec.separated(s), s.time);
       if (rec.sample_due(s, rule)) rec.sample(s);
       if (rule.finished(s) && rec.undecided() && rule.extend()) rec.add_extension();
       const bool last = rule.finished(s);
@@ -156,7 +155,6 @@ Summary run_to_end(State& s, StepRule rule, Recorder& rec, bool progress_line, R
   }
   account();
   if (rec.checkpoints().enabled()) checkpoint_now(s, rec, rule, wall());
-  rec.set_separated_since(rule.separated_since);
   return rec.finish(s, "ok");
 }
 

@@ -1,7 +1,6 @@
 // How a run chooses its time step and when it ends: solver.cfl, solver.dt_scale, solver.end_time,
-// the extensions of a run whose verdict is undecided (metrics.verdict_window,
-// metrics.verdict_extensions; docs/bonding.md) and the early end of one whose moving bodies have
-// separated (solver.stop_when_separated).
+// and the extensions of a run whose verdict is undecided (metrics.verdict_window,
+// metrics.verdict_extensions; docs/bonding.md).
 #pragma once
 
 #include <algorithm>
@@ -22,8 +21,7 @@ struct StepRule {
         cfl(c.solver.cfl),
         fixed_dt(c.solver.dt_scale ? *c.solver.dt_scale * undeformed_step : 0.0),
         window(c.metrics.verdict_window),
-        extensions_left(c.metrics.verdict_extensions),
-        stop_when_separated(c.solver.stop_when_separated) {}
+        extensions_left(c.metrics.verdict_extensions) {}
   // The same from a solver's state at t = 0.
   template <class State>
   StepRule(const case_file::Case& c, const State& s) : StepRule(c, stable_time_step(s, 1.0)) {}
@@ -41,27 +39,9 @@ struct StepRule {
     end += window;
     return true;
   }
-  // solver.stop_when_separated, after each step: `separated` says whether every moving body is
-  // free of contact and moving away (VerdictSeries::separated). The first free step brings the
-  // end to one window after it, so that the verdict's window sees the body free throughout; a
-  // contact before that end gives back the end it had.
-  void follow_separation(bool separated, double time) {
-    if (!stop_when_separated) return;
-    if (separated && separated_since < 0.0) {
-      separated_since = time;
-      end_before_separation = end;
-      end = std::min(end, time + window);
-    } else if (!separated && separated_since >= 0.0) {
-      separated_since = -1.0;
-      end = std::max(end, end_before_separation);
-    }
-  }
 
   double end, cfl, fixed_dt, window;
   int extensions_left;
-  bool stop_when_separated;
-  double separated_since = -1.0;       // s; < 0 while a moving body is in contact or approaching
-  double end_before_separation = 0.0;  // s; the end that a contact gives back
 };
 
 }  // namespace coldspray::run

@@ -84,15 +84,12 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                         : bonded == moving             ? "bonded"
                         : bonded + undecided == moving ? "undecided"
                                                        : "rebounded";
-  j["system"] = {
-      {"outcome", outcome ? nlohmann::ordered_json(outcome) : nlohmann::ordered_json()},
-      {"bonded", moving > 0 && bonded == moving},
-      {"moving_bodies", moving},
-      {"bonded_bodies", bonded},
-      {"undecided_bodies", undecided},
-      {"extensions", s.extensions},
-      {"separated_since", s.separated_since >= 0.0 ? nlohmann::ordered_json(s.separated_since)
-                                                   : nlohmann::ordered_json()}};
+  j["system"] = {{"outcome", outcome ? nlohmann::ordered_json(outcome) : nlohmann::ordered_json()},
+                 {"bonded", moving > 0 && bonded == moving},
+                 {"moving_bodies", moving},
+                 {"bonded_bodies", bonded},
+                 {"undecided_bodies", undecided},
+                 {"extensions", s.extensions}};
   io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 

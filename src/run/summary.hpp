@@ -18,9 +18,6 @@ struct Summary {
   double wall_seconds = 0.0;  // of a bond-family member, with the shared steps in full
   long shared_steps = 0;      // steps shared with other runs (run/bond_family.hpp)
   int extensions = 0;         // verdict windows the run was extended by while undecided
-  // solver.stop_when_separated: when the moving bodies were last found free and leaving, from
-  // which the run ended one verdict window later; < 0 if they were not at its end, s.
-  double separated_since = -1.0;
   int threads = 1;
   std::size_t particles = 0;
   bodies::Discretisation discretisation;

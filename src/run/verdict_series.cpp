@@ -42,25 +42,20 @@ double rest_velocity(const metrics::RestAndBond& r) {
   return r.mass > 0.0 ? r.momentum_z / r.mass : 0.0;
 }
 
-// The bodies at rest in z at t = 0 (the substrate), as one.
-metrics::RestAndBond together(const bodies::Bodies& s, const std::vector<std::size_t>& bodies) {
-  metrics::RestAndBond sum;
-  for (const std::size_t b : bodies) {
-    const metrics::RestAndBond r = metrics::rest_and_bond(s, b);
-    sum.mass += r.mass;
-    sum.momentum_z += r.momentum_z;
-    sum.rest_mass += r.rest_mass;
-    sum.rest_momentum_z += r.rest_momentum_z;
-  }
-  return sum;
-}
-
 }  // namespace
 
 void VerdictSeries::sample(const bodies::Bodies& s) {
   schedule_.done(s.time);
   // The substrate's velocity, its bodies together, without the jetting of its crater's rim.
-  const double v_substrate = rest_velocity(together(s, resting_));
+  metrics::RestAndBond substrate;
+  for (const std::size_t b : resting_) {
+    const metrics::RestAndBond r = metrics::rest_and_bond(s, b);
+    substrate.mass += r.mass;
+    substrate.momentum_z += r.momentum_z;
+    substrate.rest_mass += r.rest_mass;
+    substrate.rest_momentum_z += r.rest_momentum_z;
+  }
+  const double v_substrate = rest_velocity(substrate);
   for (std::size_t k = 0; k < moving_.size(); ++k) {
     const metrics::RestAndBond r = metrics::rest_and_bond(s, moving_[k]);
     ring_[k * capacity_ + next_] = {s.time, away_[k] * (rest_velocity(r) - v_substrate),
@@ -89,22 +84,6 @@ bool VerdictSeries::undecided() const {
   for (std::size_t k = 0; k < moving_.size(); ++k)
     if (verdict(k).outcome == metrics::Outcome::Undecided) return true;
   return false;
-}
-
-bool VerdictSeries::separated(const bodies::Bodies& s) const {
-  if (moving_.empty()) return false;
-  for (const std::size_t b : moving_)
-    for (std::size_t o = 0; o < bodies_; ++o) {
-      const std::array<double, 3>& impulse = s.contact_impulse[b * bodies_ + o];
-      if (o != b && (impulse[0] != 0.0 || impulse[1] != 0.0 || impulse[2] != 0.0)) return false;
-    }
-  const metrics::RestAndBond substrate = together(s, resting_);
-  const double v_rest = substrate.mass > 0.0 ? substrate.momentum_z / substrate.mass : 0.0;
-  for (std::size_t k = 0; k < moving_.size(); ++k) {
-    const metrics::RestAndBond r = metrics::rest_and_bond(s, moving_[k]);
-    if (!(away_[k] * (r.momentum_z / r.mass - v_rest) > 0.0)) return false;
-  }
-  return true;
 }
 
 }  // namespace coldspray::run

@@ -36,10 +36,6 @@ class VerdictSeries {
   std::vector<std::optional<metrics::Verdict>> verdicts() const;
   // Whether some moving body's verdict, were the run to end now, is undecided.
   bool undecided() const;
-  // Whether every moving body is free and leaving (solver.stop_when_separated): no impulse from
-  // another body in the last step (bodies::Bodies::contact_impulse), and its mean z velocity,
-  // all its points' (the one no force but contact changes), points away from the bodies at rest.
-  bool separated(const bodies::Bodies& s) const;
 
   // The series so far, in a checkpoint (checkpoint/archive.hpp).
   template <class Archive>

@@ -142,14 +142,15 @@ TEST(Restart, PeridynamicsWithInterfaceBondsIsBitIdentical) {
       "--set output.snapshot_interval=1ns");
 }
 
-TEST(Restart, PeridynamicsStoppingOnceSeparatedIsBitIdentical) {
-  // The particle is free and leaving from 26.3 ns, so the run ends at 46.3 ns; the restart from
-  // the checkpoint at 27 ns must end there too, not a window after its own first free step.
-  expect_restart_bit_identical(
-      kExamples + "pd-quarter-impact.yaml",
-      "--set solver.end_time=60ns --set solver.stop_when_separated=true "
-      "--set output.checkpoint_interval=13.5ns --set output.snapshot_interval=10ns",
-      "", /*from=*/1);
+TEST(Restart, PeridynamicsWithSubcyclingIsBitIdentical) {
+  // The small sphere takes two steps per step of the large one; restarted from 24 ns, within
+  // the collision (about 18-30 ns), where the large one's first kick reads its last contact
+  // force.
+  expect_restart_bit_identical(std::string(COLDSPRAY_TEST_DATA) + "/cli/pd-two-spacings.yaml",
+                               "--set peridynamics.subcycling=true --set solver.end_time=40ns "
+                               "--set output.checkpoint_interval=12ns "
+                               "--set output.snapshot_interval=5ns",
+                               "", /*from=*/1);
 }
 
 TEST(Restart, RefusesOverridesAndMissingCheckpoints) {

@@ -46,6 +46,34 @@ TEST(PeridynamicDeterminism, ElasticSpheresAreBitIdenticalOnOneAndTwoThreads) {
   }
 }
 
+// Subcycling (pd/stepper.hpp): the lower sphere grown to 6.5 um radius at 1 um spacing, the
+// largest body, so that the upper one, at 0.5 um, takes two steps per step of it; the slow
+// sphere's contact impulses gather from the substeps, point by point.
+TEST(PeridynamicDeterminism, SubcyclingIsBitIdenticalOnOneAndTwoThreads) {
+  const int threads = omp_get_max_threads();
+  auto run = [](int n) {
+    omp_set_num_threads(n);
+    return testing::run_example(
+        "verification/pd-elastic-spheres.yaml",
+        {{"bodies.upper.shape", "{type: sphere, center: [0, 0, 3.05 um], radius: 3 um}"},
+         {"bodies.lower.shape", "{type: sphere, center: [0, 0, -6.55 um], radius: 6.5 um}"},
+         {"bodies.lower.spacing", "1 um"},
+         {"bodies.upper.velocity", "[250 m/s, 0, -50 m/s]"},
+         {"bodies.lower.velocity", "[-250 m/s, 0, 50 m/s]"},
+         {"peridynamics.subcycling", "true"}},
+        40);
+  };
+  const State one = run(1), two = run(2);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.substeps, 2);
+  EXPECT_GT(std::count(one.points.touched.begin(), one.points.touched.end(), 1), 0);
+  for (std::size_t p = 0; p < one.points.size(); ++p)
+    for (int d = 0; d < 3; ++d) {
+      ASSERT_EQ(one.points.position[d][p], two.points.position[d][p]) << "point " << p;
+      ASSERT_EQ(one.points.velocity[d][p], two.points.velocity[d][p]) << "point " << p;
+    }
+}
+
 // The coarse quarter Cu impact with the control along the flow (pd/control_along_flow.hpp),
 // whose pairs keep their penalty displacements and whose slip fits gather from both ends of each
 // pair, over 60 steps of plastic flow.

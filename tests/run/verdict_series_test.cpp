@@ -106,31 +106,5 @@ TEST(VerdictSeries, AShortRunIsUndecided) {
   EXPECT_NEAR(series.verdicts()[0]->separation_speed, 1.0, 1e-12);
 }
 
-// solver.stop_when_separated reads every point's velocity, jets included: free, a body's whole
-// momentum is what no longer changes. With the substrate's jet stopped, the mean z velocities
-// are: particle (3 + 1 + 0) / 3 = 4/3, substrate (0.5 + 1.5 + 0) / 3 = 2/3, riser (-2 - 4 + 0)
-// / 3 = -2 m/s: the particle leaves at 2/3 m/s, the riser at 8/3 m/s.
-TEST(VerdictSeries, SeparatedIsFreeOfContactAndLeaving) {
-  bodies::Bodies s = three_bodies();
-  s.points.velocity[2][5] = 0.0;
-  s.contact_impulse.assign(9, {0.0, 0.0, 0.0});
-  const VerdictSeries series(eighty_ns().metrics, s);
-  EXPECT_TRUE(series.separated(s));
-
-  s.contact_impulse[0 * 3 + 1] = {0.0, 1e-30, 0.0};  // the substrate still touches the particle
-  EXPECT_FALSE(series.separated(s));
-  s.contact_impulse[0 * 3 + 1] = {0.0, 0.0, 0.0};
-  s.contact_impulse[2 * 3 + 1] = {0.0, 0.0, -1e-30};  // or the riser
-  EXPECT_FALSE(series.separated(s));
-  s.contact_impulse[2 * 3 + 1] = {0.0, 0.0, 0.0};
-
-  // The particle's jet, 0 m/s, brought to -1 m/s: mean 1 m/s, still leaving; to -3: 1/3 m/s,
-  // below the substrate's 2/3, approaching again.
-  s.points.velocity[2][2] = -1.0;
-  EXPECT_TRUE(series.separated(s));
-  s.points.velocity[2][2] = -3.0;
-  EXPECT_FALSE(series.separated(s));
-}
-
 }  // namespace
 }  // namespace coldspray::run
