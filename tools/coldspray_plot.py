@@ -789,21 +789,29 @@ def command_pbcp_velocity(options):
 
 def command_sweep(options):
     """A sweep's result column against its varied key, one line per sweep folder (e.g. per
-    impact speed: the PD paper's Fig 7 is particle.cor against contact.beta)."""
-    labels = run_labels(options.dirs, options.labels)
+    impact speed: the PD paper's Fig 7 is particle.cor against contact.beta), or with --by one
+    line per value of another varied key of the same folders."""
+    labels = run_labels(options.dirs, options.labels) if not options.by else None
     fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 4.0))
+    lines = []  # (label, [(x, y)])
     for k, folder in enumerate(options.dirs):
         rows = read_csv_rows(os.path.join(require_dir(folder), "sweep.csv"))
-        for column in (options.x, options.y):
+        for column in (options.x, options.y) + ((options.by,) if options.by else ()):
             if column not in rows[0]:
                 raise PlotError(f"{folder}/sweep.csv: no column '{column}' "
                                 f"(columns: {', '.join(rows[0])})")
-        done = sorted((_to_float(r[options.x]), _to_float(r[options.y])) for r in rows
-                      if r["status"] == "ok")
+        done = [r for r in rows if r["status"] == "ok"]
         if not done:
             raise PlotError(f"{folder}/sweep.csv: no finished case")
-        ax.plot([d[0] for d in done], [d[1] for d in done], "o-", color=f"C{k}",
-                label=labels[k])
+        groups = {}
+        for r in done:
+            groups.setdefault(r[options.by] if options.by else labels[k], []).append(
+                (_to_float(r[options.x]), _to_float(r[options.y])))
+        lines += [(f"{options.by} = {g}" if options.by else g, sorted(points))
+                  for g, points in groups.items()]
+    for k, (label, points) in enumerate(lines):
+        ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=f"C{k}",
+                label=label)
     ax.set_xlabel(options.x)
     ax.set_ylabel(options.y)
     ax.grid(True, alpha=0.3)
@@ -1021,6 +1029,8 @@ def build_parser():
     sweep.add_argument("--x", required=True, help="varied key, e.g. contact.beta")
     sweep.add_argument("--y", required=True, help="result column, e.g. particle.cor")
     sweep.add_argument("--labels", help="legend labels, comma-separated (default folder names)")
+    sweep.add_argument("--by", help="another varied key: one line per value of it "
+                                    "(e.g. bodies.particle.velocity)")
     sweep.add_argument("--panel-width", type=float, default=6.0, help="figure width, inches")
     sweep.add_argument("--dpi", type=int, default=150)
     sweep.add_argument("--out", required=True, help="PNG file to write")

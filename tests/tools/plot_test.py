@@ -353,6 +353,32 @@ class PlotToolTest(unittest.TestCase):
             self.run_tool("sweep", folder, "--x", "contact.beta", "--y", "particle.v_rest",
                           "--out", missing), missing, "particle.v_rest")
 
+    def test_sweep_draws_a_line_per_value_of_another_key(self):
+        folder = self.out("sweep-two-keys")
+        os.makedirs(folder)
+        with open(os.path.join(folder, "sweep.csv"), "w") as f:
+            f.write('case,status,bodies.particle.velocity,contact.beta,particle.cor\n'
+                    'case_0001,ok,"[0,0,-400 m/s]",0.002,0.07\n'
+                    'case_0002,ok,"[0,0,-400 m/s]",0.004,0.0\n'
+                    'case_0003,ok,"[0,0,-500 m/s]",0.002,0.08\n'
+                    'case_0004,failed,"[0,0,-500 m/s]",0.004,nan\n')
+        lines = []  # what the tool draws: (label, x, y) per line
+        axes, draw = self.tool.plt.Axes, self.tool.plt.Axes.plot
+        axes.plot = lambda ax, x, y, *a, **k: lines.append((k["label"], list(x), list(y)))
+        try:
+            self.tool.command_sweep(self.tool.build_parser().parse_args(
+                ["sweep", folder, "--x", "contact.beta", "--y", "particle.cor", "--by",
+                 "bodies.particle.velocity", "--out", self.out("by.png")]))
+        finally:
+            axes.plot = draw
+        self.assertEqual(lines, [
+            ("bodies.particle.velocity = [0,0,-400 m/s]", [0.002, 0.004], [0.07, 0.0]),
+            ("bodies.particle.velocity = [0,0,-500 m/s]", [0.002], [0.08])])
+        missing = self.out("by-missing.png")
+        self.assert_failed_without_png(
+            self.run_tool("sweep", folder, "--x", "contact.beta", "--y", "particle.cor", "--by",
+                          "contact.r0", "--out", missing), missing, "contact.r0")
+
     def test_bulk_fracture_draws_the_bulk_curve_and_its_fit(self):
         folder = write_bulk_fracture(self.out("bulk-fracture"))
         path = self.out("bulk-fracture.png")
