@@ -92,6 +92,11 @@ struct Bodies {
   // Peridynamics: the neighbours in each point's family (the snapshots' `neighbours`); empty for
   // the MPM.
   std::vector<std::uint32_t> family_size;
+  // Per point, 1 if the pull-off test's grip moves it (bodies/grip.hpp), at grip_velocity after
+  // its ramp.
+  std::vector<std::uint8_t> gripped;
+  Eigen::Vector3d grip_velocity = Eigen::Vector3d::Zero();  // m/s
+  double grip_ramp = 0.0;                                   // s
 
   double time = 0.0;
   double dt = 0.0;

@@ -58,6 +58,9 @@ struct Points {
   // has not; the bond force acts wherever bonded points of both bodies meet (mpm/contact.hpp).
   std::vector<double> bond;
   std::vector<std::uint16_t> bonded_to;
+  // The bond's damage under the debonding law (bonding/cohesive_law.hpp), 0 intact: at 1 the
+  // point lets go of its bond for good and no longer counts towards a new one.
+  std::vector<double> bond_damage;
   std::vector<std::uint8_t> touched;
   std::vector<std::uint8_t> touching;
   std::array<std::vector<double>, 3> contact_normal;
@@ -90,7 +93,7 @@ struct Points {
     f("plastic_work", plastic_work), f("viscous_work", viscous_work);
     f("contact_work", contact_work), f("initial_z", initial_z), f("bond", bond);
     f("surface", surface), f("touched", touched), f("touching", touching), f("body", body);
-    f("bonded_to", bonded_to), f("id", id);
+    f("bonded_to", bonded_to), f("id", id), f("bond_damage", bond_damage);
   }
   // Calls f(v) for every per-point array v.
   template <class F>

@@ -144,6 +144,26 @@ enum class NodalAverage { Count, Weight };
 // defaults are the project's calibration for al-ptw on al-ptw with floor 0.1, r-z, 0.7/0.175 um
 // (examples/calibration/al-energy.yaml; docs/validation/critical-velocity.md), not the
 // thesis' G_c = 1503.74 J/m^2, Gdot_c = 2.271 J/m^2/us, which do not carry over to our floor.
+// What happens to a bond under load (docs/bonding.md, "Debonding"): it holds for good (`none`,
+// the thesis), or a bonded node carries at most a strength and lets go after a fracture energy,
+// both in proportion to the bonded points' min(D_bond, 1) (`cohesive`: the extrinsic
+// linear-softening law of Camacho and Ortiz 1996, mixed mode after Ortiz and Pandolfi 1999).
+enum class DebondLaw { None, Cohesive };
+
+struct Debond {
+  // Off by default while the law is verified (issue 26): see docs/bonding.md, "Debonding".
+  DebondLaw law = DebondLaw::None;
+  // The full bond's tensile strength, Pa; unset, the bonded points' own flow stress (the metal
+  // next to a complete metallurgical bond).
+  std::optional<double> strength;
+  // The full bond's fracture energy, J/m^2; unset, Bonding::critical_energy (thesis §6.2: the
+  // adhesion energy that formed the bond).
+  std::optional<double> fracture_energy;
+  double shear_ratio = 1.0;  // shear strength over tensile strength (Ortiz-Pandolfi's beta)
+
+  friend bool operator==(const Debond&, const Debond&) = default;
+};
+
 struct Bonding {
   BondingModel model = BondingModel::None;
   double critical_strain = 1.4;            // eps_c, eq 4.4 (thesis §4.1.4's example)
@@ -154,6 +174,7 @@ struct Bonding {
   // exceeds 1 at jetting rates and would make them negative (docs/bonding.md).
   double floor = 0.1;
   NodalAverage nodal_average = NodalAverage::Weight;
+  Debond debond;
 
   friend bool operator==(const Bonding&, const Bonding&) = default;
 };
@@ -209,14 +230,16 @@ struct Symmetry {
   friend bool operator==(const Symmetry&, const Symmetry&) = default;
 };
 
-// A rigid grip (peridynamics; the pull-off test, docs/pull-off.md): at t = 0 every point is set
-// at rest, and the points of `body` in the last `fraction` of its extent along `velocity` are
-// gripped: they move at `velocity` from then on, whatever the forces on them, reaching it
-// smoothly over `ramp` ((1 - cos(pi t / ramp)) / 2), so that starting sends no stress wave.
+// A rigid grip (the pull-off test, docs/pull-off.md): at t = 0 every point is set at rest, and
+// the points of `body` in the last `fraction` of its extent along `side` (unset, zero: along
+// `velocity`) are gripped: they move at `velocity` from then on, whatever the forces on them,
+// reaching it smoothly over `ramp` ((1 - cos(pi t / ramp)) / 2), so that starting sends no
+// stress wave.
 struct Grip {
   std::string body;
   double fraction = 0.5;
   Vec3 velocity = Vec3::Zero();  // m/s
+  Vec3 side = Vec3::Zero();      // a direction; zero: the velocity's
   double ramp = 0.0;             // s
 
   friend bool operator==(const Grip&, const Grip&) = default;

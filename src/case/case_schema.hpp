@@ -51,6 +51,9 @@ inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingMod
                                                              {"strain", BondingModel::Strain},
                                                              {"energy", BondingModel::Energy}}}};
 
+inline constexpr Names<DebondLaw, 2> kDebondLawNames{
+    {{{"none", DebondLaw::None}, {"cohesive", DebondLaw::Cohesive}}}};
+
 inline constexpr Names<ContactModel, 3> kContactModelNames{
     {{{"repulsive", ContactModel::Repulsive},
       {"lennard-jones", ContactModel::LennardJones},
@@ -163,6 +166,14 @@ void fields(IO& io, Contact& c) {
 }
 
 template <class IO>
+void fields(IO& io, Debond& d) {
+  io.scalar("law", d.law, kDebondLawNames, kOptional);
+  io.quantity("strength", d.strength, units::kPressure, kOptional, kPositive);
+  io.quantity("fracture_energy", d.fracture_energy, units::kEnergyPerArea, kOptional, kPositive);
+  io.quantity("shear_ratio", d.shear_ratio, units::kDimensionless, kOptional, kPositive);
+}
+
+template <class IO>
 void fields(IO& io, Bonding& b) {
   io.scalar("model", b.model, kBondingModelNames, kOptional);
   io.quantity("critical_strain", b.critical_strain, units::kDimensionless, kOptional, kPositive);
@@ -172,6 +183,7 @@ void fields(IO& io, Bonding& b) {
               kOptional, kPositive);
   io.quantity("floor", b.floor, units::kDimensionless, kOptional, kFraction);
   io.scalar("nodal_average", b.nodal_average, kNodalAverageNames, kOptional);
+  io.section("debond", b.debond, kOptional);
 }
 
 template <class IO>
@@ -205,6 +217,7 @@ void fields(IO& io, Grip& g) {
   io.quantity("fraction", g.fraction, units::kDimensionless, kOptional, kFraction);
   io.vector("velocity", g.velocity, units::kVelocity, kRequired);
   io.check(g.velocity.norm() > 0.0, "velocity", "must not be zero: the grip pulls at it");
+  io.vector("side", g.side, units::kDimensionless, kOptional);
   io.quantity("ramp", g.ramp, units::kTime, kOptional, kNonNegative);
 }
 

@@ -52,8 +52,6 @@ void check_solver_sections(const Document& doc, const Case& c) {
         if (!b.roller.empty())
           fail_at(doc, {"bodies", b.name, "roller"},
                   "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
-      if (c.grip)
-        fail_at(doc, {"grip"}, "is peridynamics only (the MPM's pull-off test is issue 26)");
       if (c.contact.model != ContactModel::Repulsive)
         fail_at(doc, {"contact", "model"},
                 "is peridynamics only: the MPM's grid contact has no force law to choose");

@@ -28,7 +28,16 @@ void fields(Archive& a, bodies::Departed& d, const std::string& at) {
 // The solver-neutral part: points, body ranges and ledgers, absorbing points, clock.
 template <class Archive>
 void fields(Archive& a, bodies::Bodies& s) {
-  s.points.for_each_named_array([&](const std::string& name, auto& v) { a("points/" + name, v); });
+  s.points.for_each_named_array([&](const std::string& name, auto& v) {
+    // Absent from checkpoints before the debonding law (2026-12-05), whose bonds were intact.
+    if (name == "bond_damage")
+      a.optional("points/" + name, v);
+    else
+      a("points/" + name, v);
+  });
+  if constexpr (Archive::kReading)
+    if (s.points.bond_damage.size() != s.points.size())
+      s.points.bond_damage.assign(s.points.size(), 0.0);
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const std::string at = "bodies/" + std::to_string(b) + "/";
     a(at + "begin", s.bodies[b].begin), a(at + "end", s.bodies[b].end);
@@ -51,11 +60,16 @@ void fields(Archive& a, bodies::Bodies& s) {
   a("clock/max_signal_speed", s.max_signal_speed);
 }
 
-// The MPM carries nothing but the bodies from step to step: each step builds its grid afresh
-// from the points (thesis steps 1-2) and resets it at its end (step 12).
+// The MPM carries nothing but the bodies (and a grip's hold) from step to step: each step builds
+// its grid afresh from the points (thesis steps 1-2) and resets it at its end (step 12).
 template <class Archive>
 void fields(Archive& a, mpm::State& s) {
   fields(a, static_cast<bodies::Bodies&>(s));
+  // The pull-off test's grip (bodies/grip.hpp); absent from checkpoints before the MPM's
+  // (2026-12-05), whose runs had none.
+  a.optional("mpm/gripped", s.gripped);
+  if constexpr (Archive::kReading)
+    if (s.gripped.size() != s.points.size()) s.gripped.assign(s.points.size(), 0);
 }
 
 template <class Archive>

@@ -5,20 +5,16 @@
 #include <limits>
 #include <numbers>
 
+#include "bodies/point_area.hpp"
+
 namespace coldspray::metrics {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The surface area a point stands for: V^(2/3) in 3D; in r-z the ring 2 pi r a of side
-// a = sqrt(V / (2 pi r)).
 double point_area(const bodies::Bodies& s, std::size_t p) {
-  const bodies::Points& P = s.points;
-  const double V = P.volume0[p] * P.J[p];
-  if (s.geometry != case_file::Geometry::Axisymmetric) return std::cbrt(V * V);
-  const double r = P.position[0][p];
-  return 2.0 * std::numbers::pi * r * std::sqrt(V / (2.0 * std::numbers::pi * r));
+  return bodies::point_area(s.points, p, s.geometry == case_file::Geometry::Axisymmetric);
 }
 
 // The factor from the modelled part of a body to the whole: 2 per symmetry plane it was cut at

@@ -61,6 +61,9 @@ void ContactNodes::grow(std::size_t slots) {
   pair_touching.resize(slots * kMaxPairsPerNode);
   pair_bonded_sides.resize(slots * kMaxPairsPerNode);
   pair_bond_forms.resize(slots * kMaxPairsPerNode);
+  for (auto* v : {&bond_weight, &bond_strength, &bond_share, &bond_damage, &side_area[0],
+                  &side_area[1], &opened_damage})
+    v->resize(slots * kMaxPairsPerNode);
   bond_sum.resize(slots * kMaxBodiesPerNode);
   surface_count.resize(slots * kMaxBodiesPerNode);
   surface_weight.resize(slots * kMaxBodiesPerNode);
@@ -162,6 +165,8 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
         c.pair_touching[k] = 0;
         c.pair_bonded_sides[k] = 0;
         c.pair_bond_forms[k] = 0;
+        c.bond_weight[k] = c.bond_strength[k] = c.bond_share[k] = c.bond_damage[k] = 0.0;
+        c.side_area[0][k] = c.side_area[1][k] = c.opened_damage[k] = 0.0;
       }
   }
 }
@@ -177,6 +182,42 @@ double nodal_bond(const ContactNodes& c, const std::vector<double>& bond_sum, st
   }
   return 0.5 * sum;
 }
+
+namespace {
+
+// The bond force at a pair's node under the debonding law (bonding/cohesive_law.hpp): the full
+// sticking correction `stick` (eq 3.31 times dt, on the master, whose outward normal is n) while
+// the traction it takes, stick / (dt A), is within what the bond's points carry there; past it,
+// that traction, the normal part kept where it presses the bodies together. The opening the
+// bodies' relative velocity then makes over the step damages the bond (opened_damage).
+Vector3d cohesive_bond_force(ContactNodes& c, std::size_t k, const ContactRule& rule, double dt,
+                             const Vector3d& stick, const Vector3d& n, const Vector3d& pm,
+                             const Vector3d& ps, double mm, double ms) {
+  const bonding::CohesiveLaw& law = rule.debond;
+  const double w = c.bond_weight[k];
+  const double strength = c.bond_strength[k] / w;
+  const double damage = c.bond_damage[k] / w;
+  const double capacity = bonding::traction_capacity(strength, damage);
+  const double area = 0.5 * (c.side_area[0][k] + c.side_area[1][k]);
+  const double carried = bonding::effective_traction(stick / (dt * area), n, law.shear_ratio);
+  if (carried <= capacity) return stick;
+  const double scale = capacity / carried;
+  const double normal = stick.dot(n);
+  const Vector3d dp =
+      normal < 0.0 ? Vector3d(normal * n + scale * (stick - normal * n)) : Vector3d(scale * stick);
+  // The other body's displacement relative to the master's once dp acts, over the step.
+  const Vector3d opening = dt * ((ps - dp) / ms - (pm + dp) / mm);
+  const double energy = law.fracture_energy * c.bond_share[k] / w;
+  const double opened =
+      strength > 0.0 && energy > 0.0
+          ? bonding::damage_increment(bonding::effective_opening(opening, n, law.shear_ratio),
+                                      strength, energy)
+          : 1.0;  // a bond that carries nothing lets go at once
+  c.opened_damage[k] = opened;
+  return dp;
+}
+
+}  // namespace
 
 void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
                      std::vector<std::array<double, 3>>& impulse) {
@@ -208,7 +249,10 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
         // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
         const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
         const double normal = stick.dot(n);
-        Vector3d dp = bonded ? stick : Vector3d(normal * n);
+        const bool cohesive = bonded && rule.debond.enabled && c.bond_weight[k] > 0.0;
+        Vector3d dp = cohesive ? cohesive_bond_force(c, k, rule, dt, stick, n, pm, ps, mm, ms)
+                      : bonded ? stick
+                               : Vector3d(normal * n);
         if (!bonded && rule.friction > 0.0) {
           const Vector3d tangential = stick - dp;
           const double t = tangential.norm(), limit = rule.friction * std::abs(normal);

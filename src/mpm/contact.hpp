@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bonding/cohesive_law.hpp"
 #include "case/case.hpp"
 
 namespace coldspray::mpm {
@@ -73,6 +74,20 @@ class ContactNodes {
   // surface points of both bodies covering the node are bonded from then on.
   std::vector<std::uint8_t> pair_bond_forms;
   static constexpr std::uint8_t kLowerSide = 1, kHigherSide = 2;
+  // The debonding law's view of a pair's bond at the node (bonding/cohesive_law.hpp), summed over
+  // the bonded points of both bodies covering it, each bonded to the other: sum N_I, sum N_I s_p
+  // sigma_p, sum N_I s_p (s_p = min(D_bond, 1), sigma_p the point's full-bond strength) and sum
+  // N_I d_p (damage), whose weighted means are the node's strength, share of the full fracture
+  // energy and damage; per side (the pair's lower and higher entry), sum N_I a_p, a_p the surface
+  // area the point stands for; the node's share of the bond's area is their mean (a flat
+  // interface between node layers puts a share on layers one side barely reaches: docs/bonding.md,
+  // "Debonding", measured shortfall). `opened_damage`: the damage the step's opening added there.
+  std::vector<double> bond_weight;
+  std::vector<double> bond_strength;
+  std::vector<double> bond_share;
+  std::vector<double> bond_damage;
+  std::array<std::vector<double>, 2> side_area;
+  std::vector<double> opened_damage;
 
   // Per entry, for the nodal bonding parameter (eq 4.6): sum over the body's surface points
   // covering the node of D_bond N_I(x_p), and their number.
@@ -100,6 +115,9 @@ struct ContactRule {
   // The direct bonding model is on: bonded nodes stick (thesis §4.1.1).
   bool bonding = false;
   case_file::NodalAverage nodal_average = case_file::NodalAverage::Weight;  // eq 4.6's divisor
+  // With bonding, what a bond carries before it lets go (`bonding.debond`); disabled, a bond
+  // holds for good.
+  bonding::CohesiveLaw debond;
 };
 
 // The MVG choice of master bodies, kept from step to step, and its per-step scratch.
@@ -125,9 +143,10 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Where
 // the pair is bonded (a bond forms there, nodal D_bond of eq 4.7 >= 1, or one kept on the points
 // holds) the correction is applied in full, normal and tangential, approaching or not: the bond
-// force. Each correction changes the two bodies' momenta by equal and opposite amounts, and
-// their forces by the same over dt; `impulse` (bodies::Bodies::contact_impulse) sums them per
-// ordered body pair.
+// force; with a debonding law, only up to the traction the bond's points can carry there, the
+// rest opening the bond (contact.damage_increment). Each correction changes the two bodies' momenta
+// by equal and opposite amounts, and their forces by the same over dt; `impulse`
+// (bodies::Bodies::contact_impulse) sums them per ordered body pair.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
                      std::vector<std::array<double, 3>>& impulse);
 
@@ -157,8 +176,9 @@ inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1,
 // Eq 4.7's criterion: a bond forms at a node where the pair's nodal D_bond reaches 1.
 inline bool bond_forms(double nodal_bond_value) { return nodal_bond_value >= 1.0; }
 
-// Whether the bond kept on the points holds at a node: bonded points of both bodies reach it.
-// Without a debonding law (a later issue's place, here) a bond, once formed, always holds.
+// Whether the bond kept on the points holds at a node: bonded points of both bodies reach it. A
+// point lets go of its bond when its damage under the debonding law reaches 1 (mark_touching_points
+// in mpm/phases.hpp); without one, a bond, once formed, always holds.
 inline bool bond_holds(std::uint8_t bonded_sides) {
   return bonded_sides == (ContactNodes::kLowerSide | ContactNodes::kHigherSide);
 }

@@ -77,6 +77,7 @@ void remove_departed_points(State& s) {
   // next step may be shorter than it need be.)
   P.for_each_array([&](auto& v) { erase_indices(v, gone); });
   for (auto& f : s.external_force) erase_indices(f, gone);
+  erase_indices(s.gripped, gone);
   std::erase_if(s.absorbing, [&](const AbsorbingPoint& a) { return is_gone(gone, a.point); });
   for (AbsorbingPoint& a : s.absorbing) a.point = index_after(a.point, gone);
   for (BodyRange& b : s.bodies) {

@@ -9,6 +9,9 @@
 #include <cmath>
 #include <tuple>
 
+#include "bodies/grip.hpp"
+#include "bodies/point_area.hpp"
+#include "bonding/cohesive_law.hpp"
 #include "core/double4.hpp"
 #include "materials/stress_update.hpp"
 #include "mpm/state.hpp"
@@ -136,12 +139,27 @@ void map_bodies_to_contact_nodes(State& s) {
 }
 
 // A point of entry e, bonded to body `partner`, covers the node at `slot`: its side of the pair
-// with the partner's entry is bonded there (ContactNodes::pair_bonded_sides).
-inline void mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int partner) {
+// with the partner's entry is bonded there (ContactNodes::pair_bonded_sides). Returns the pair,
+// or -1 where the partner has no entry.
+inline std::ptrdiff_t mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int partner) {
   const int o = cn.find(slot, partner);
-  if (o < 0 || o == e) return;
-  cn.pair_bonded_sides[ContactNodes::pair(slot, std::min(e, o), std::max(e, o))] |=
-      e < o ? ContactNodes::kLowerSide : ContactNodes::kHigherSide;
+  if (o < 0 || o == e) return -1;
+  const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
+  cn.pair_bonded_sides[k] |= e < o ? ContactNodes::kLowerSide : ContactNodes::kHigherSide;
+  return static_cast<std::ptrdiff_t>(k);
+}
+
+// A bonded point's share, weight w = N_I(x_p), of the debonding law's sums at pair k
+// (ContactNodes::bond_weight and after).
+template <bool Axisymmetric>
+void add_to_bond_sums(ContactNodes& cn, const bonding::CohesiveLaw& law, const Points& P,
+                      std::size_t p, std::size_t k, bool lower_side, double w) {
+  const double share = w * bonding::bonded_share(P.bond[p]);
+  cn.bond_weight[k] += w;
+  cn.bond_strength[k] += share * law.full_strength(P.flow_stress[p]);
+  cn.bond_share[k] += share;
+  cn.bond_damage[k] += w * P.bond_damage[p];
+  cn.side_area[lower_side ? 0 : 1][k] += w * bodies::point_area(P, p, Axisymmetric);
 }
 
 // What the contact step needs from the points near contact nodes. For the gap check: along each
@@ -154,6 +172,7 @@ inline void mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int par
 template <class Shape, bool Axisymmetric>
 void gather_contact_points(State& s) {
   const bool gap = s.contact_rule.gap_check, bonding = s.contact_rule.bonding;
+  const bonding::CohesiveLaw& debond = s.contact_rule.debond;
   if (s.contact.size() == 0 || !(gap || bonding)) return;
   ContactNodes& cn = s.contact;
   const Points& P = s.points;
@@ -170,11 +189,18 @@ void gather_contact_points(State& s) {
       const int e = cn.find(slot, b);
       if (bonding && P.surface[p]) {
         const std::size_t f = ContactNodes::flat(slot, e);
-        add_bond_share(cn.bond_sum[f], P.bond[p], w);
+        // A point whose bond broke counts as unbonded towards a new one (bond_damage).
+        add_bond_share(cn.bond_sum[f], P.bond_damage[p] >= 1.0 ? 0.0 : P.bond[p], w);
         ++cn.surface_count[f];
         cn.surface_weight[f] += w;
         if (shadowing) shadows.add_to_sums(p, f, w);
-        if (P.bonded_to[p] != 0) mark_bonded_side(cn, slot, e, P.bonded_to[p] - 1);
+        if (P.bonded_to[p] != 0) {
+          const int partner = P.bonded_to[p] - 1;
+          const std::ptrdiff_t k = mark_bonded_side(cn, slot, e, partner);
+          if (k >= 0 && debond.enabled)
+            add_to_bond_sums<Axisymmetric>(cn, debond, P, p, static_cast<std::size_t>(k),
+                                           e < cn.find(slot, partner), w);
+        }
       }
       if (!gap) return;
       for (int o = 0; o < cn.body_count(slot); ++o) {
@@ -201,12 +227,16 @@ void gather_contact_points(State& s) {
 // part of its plastic strain (bonding/bond_law.hpp). A surface point covering a node where a bond
 // formed this step (ContactNodes::pair_bond_forms: it entered that node's eq 4.6) keeps the bond
 // to the other body from then on (Points::bonded_to), so that the bond no longer depends on which
-// points the moving material brings to the node. Writes only its own point.
+// points the moving material brings to the node, unless its own bond broke before. A bonded
+// point adds the N-weighted mean of the damage the step's opening added at the nodes where its
+// bond acts (ContactNodes::opened_damage) and lets go of its bond when its damage reaches 1.
+// Writes only its own point.
 template <class Shape, bool Axisymmetric>
 void mark_touching_points(State& s) {
   if (!s.contact_rule.bonding) return;
   Points& P = s.points;
   const ContactNodes& cn = s.contact;
+  const bool debond = s.contact_rule.debond.enabled;
   const long n = static_cast<long>(P.size());
 #pragma omp parallel for schedule(static)
   for (long pi = 0; pi < n; ++pi) {
@@ -216,7 +246,8 @@ void mark_touching_points(State& s) {
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     if (!near_contact(s, st)) continue;
     const int b = P.body[p];
-    double normal[3] = {0.0, 0.0, 0.0};
+    const std::uint16_t bonded_to = P.bonded_to[p];
+    double normal[3] = {0.0, 0.0, 0.0}, opened = 0.0, weight = 0.0;
     st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
       const std::int32_t slot = s.grid.contact_slot[node];
       if (slot < 0 || w == 0.0) return;
@@ -224,8 +255,12 @@ void mark_touching_points(State& s) {
       for (int o = 0; o < cn.body_count(slot); ++o) {
         if (o == e) continue;
         const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
-        if (cn.pair_bond_forms[k] && P.bonded_to[p] == 0)
+        if (cn.pair_bond_forms[k] && P.bonded_to[p] == 0 && P.bond_damage[p] < 1.0)
           P.bonded_to[p] = static_cast<std::uint16_t>(cn.body(slot, o) + 1);
+        if (debond && bonded_to == cn.body(slot, o) + 1 && cn.bond_weight[k] > 0.0) {
+          opened += w * cn.opened_damage[k];
+          weight += w;
+        }
         if (!cn.pair_touching[k]) continue;
         P.touching[p] = 1;
         const double outward = cn.pair_master[k] == e ? w : -w;
@@ -235,6 +270,10 @@ void mark_touching_points(State& s) {
     const double norm =
         std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     for (int d = 0; d < 3; ++d) P.contact_normal[d][p] = norm > 0.0 ? normal[d] / norm : 0.0;
+    if (weight > 0.0) {
+      P.bond_damage[p] = std::min(1.0, P.bond_damage[p] + opened / weight);
+      if (P.bond_damage[p] >= 1.0) P.bonded_to[p] = 0;
+    }
   }
 }
 
@@ -331,7 +370,8 @@ template <class Stencil, class F>
 // of the energy budget. Step 8, the MUSL re-map: the nodal momenta again from the updated point
 // velocities, total and per body at contact nodes. A point's re-mapped momentum needs only its
 // own new velocity, so both steps share its stencil; the re-map fills the momentum arrays, which
-// step 7 does not read (it reads the velocities derived from them).
+// step 7 does not read (it reads the velocities derived from them). A point the pull-off test's
+// grip holds takes the grip's velocity and motion instead (bodies/grip.hpp).
 template <class Shape, bool Axisymmetric>
 void update_point_velocities_and_remap(State& s) {
   GridFields& g = s.grid;
@@ -343,6 +383,9 @@ void update_point_velocities_and_remap(State& s) {
   const std::size_t used = cn.size() * kMaxBodiesPerNode;
   for (auto& a : cn.momentum) std::fill_n(a.begin(), used, 0.0);
   const double dt = s.dt;
+  // The grip's velocity at the step's start and end (bodies/grip.hpp).
+  const Eigen::Vector3d grip_from = bodies::grip_velocity_at(s, s.time);
+  const Eigen::Vector3d grip_to = bodies::grip_velocity_at(s, s.time + dt);
   for_each_point_by_block(s.blocks, [&](std::size_t p) {
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
     const int b = P.body[p];
@@ -363,6 +406,14 @@ void update_point_velocities_and_remap(State& s) {
       v_new[d] = P.velocity[d][p] += dv[d];
       P.displacement[d][p] = v[d] * dt;
     }
+    // A gripped point moves with the grip, whatever the grid gives it; the kinetic energy the
+    // grip adds goes to the budget's contact entry, as PD books it (pd/stepper.cpp).
+    if (s.gripped[p])
+      for (int d = 0; d < 3; ++d) {
+        P.contact_work[p] += 0.5 * m * (grip_to[d] * grip_to[d] - v_new[d] * v_new[d]);
+        v_new[d] = P.velocity[d][p] = grip_to[d];
+        P.displacement[d][p] = 0.5 * (grip_from[d] + grip_to[d]) * dt;
+      }
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
       const double wm = w * m;
       for (int d = 0; d < 3; ++d) g.sums[n].momentum[d] += wm * v_new[d];

@@ -9,6 +9,7 @@
 #include <optional>
 #include <tuple>
 
+#include "bodies/grip.hpp"
 #include "bodies/seed_bodies.hpp"
 #include "case/grid_domain.hpp"
 #include "case/key_locations.hpp"
@@ -153,6 +154,7 @@ State build_state(const case_file::Case& c) {
   s.near_contact.assign(s.layout.node_count(), 0);
   constrain_grid_faces(c, s);
   for (auto& f : s.external_force) f.assign(total, 0.0);
+  bodies::prepare_grip(s, c.grip);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
     for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i)
@@ -182,6 +184,7 @@ State build_state(const case_file::Case& c) {
   s.bonding = s.bond_law.enabled();
   s.contact_rule.bonding = s.bonding;
   s.contact_rule.nodal_average = c.bonding.nodal_average;
+  s.contact_rule.debond = bonding::CohesiveLaw::from_case(c.bonding);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
     if (c.contact.normal == case_file::ContactNormal::Body &&

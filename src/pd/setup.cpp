@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bodies/grip.hpp"
 #include "bodies/seed_bodies.hpp"
 #include "case/key_locations.hpp"
 #include "core/error.hpp"
@@ -220,8 +221,7 @@ State build_state(const case_file::Case& c) {
   }
 
   s.held.assign(n, 0);
-  s.gripped.assign(n, 0);
-  if (c.grip) s.grip_velocity = c.grip->velocity, s.grip_ramp = c.grip->ramp;
+  bodies::prepare_grip(s, c.grip);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
     for (const case_file::BodyFace face : c.bodies[b].roller) {

@@ -105,10 +105,6 @@ struct State : bodies::Bodies {
   std::array<std::vector<double>, 3> external_force;  // the dashpots' and the grip's forces, N
   // Per point, the velocity components held at zero: bit d for axis d (fixed and roller faces).
   std::vector<std::uint8_t> held;
-  // Per point, 1 if the grip moves it (pd/grip.hpp), at grip_velocity after its ramp.
-  std::vector<std::uint8_t> gripped;
-  Eigen::Vector3d grip_velocity = Eigen::Vector3d::Zero();  // m/s
-  double grip_ramp = 0.0;                                   // s
 
   ContactList contact;
   std::vector<ContactLaw> contact_law;  // per ordered body pair [a * bodies + b]

@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bodies/grip.hpp"
 #include "bodies/material_state.hpp"
 #include "bodies/update_points.hpp"
 #include "materials/artificial_viscosity.hpp"
 #include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
 #include "pd/forces.hpp"
-#include "pd/grip.hpp"
 #include "pd/pair_forces.hpp"
 #include "pd/symmetry.hpp"
 #include "pd/tensor_field.hpp"
@@ -26,7 +26,7 @@ namespace {
 // v += dt/2 a at every point. A held component stays at zero; the kinetic energy a hold takes
 // (once, when a moving face is first held) goes to the budget's contact entry, as the MPM books
 // the velocity corrections of its contact and held nodes. A gripped point moves at the grip's
-// velocity (pd/grip.hpp); the kinetic energy its ramp gives goes to the same entry.
+// velocity (bodies/grip.hpp); the kinetic energy its ramp gives goes to the same entry.
 //
 // With `contact_kick` (subcycling), the contact's part of a is replaced by the contact impulse
 // density that array holds, N s/m^3, and its work booked as the kinetic energy it gives: the
@@ -34,7 +34,7 @@ namespace {
 void kick(State& s, double t, const std::array<std::vector<double>, 3>* contact_kick = nullptr) {
   bodies::Points& P = s.points;
   const double half = 0.5 * s.dt;
-  const Eigen::Vector3d grip = grip_velocity_at(s, t);
+  const Eigen::Vector3d grip = bodies::grip_velocity_at(s, t);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!s.advancing[P.body[i]]) continue;
@@ -209,7 +209,7 @@ void book_works(State& s, bool book_contact = true) {
     }
     P.viscous_work[i] -= control * P.volume0[i] * s.dt;
     if (book_contact) P.contact_work[i] += contact * P.volume0[i] * s.dt;
-    // The grip's work, which the budget books with the holds' (pd/grip.hpp).
+    // The grip's work, which the budget books with the holds' (bodies/grip.hpp).
     if (s.gripped[i])
       for (int d = 0; d < 3; ++d)
         P.contact_work[i] += s.external_force[d][i] * P.velocity[d][i] * s.dt;

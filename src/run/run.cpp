@@ -7,9 +7,9 @@
 #include <iostream>
 #include <string>
 
+#include "bodies/grip.hpp"
 #include "core/error.hpp"
 #include "mpm/stepper.hpp"
-#include "pd/grip.hpp"
 #include "pd/stepper.hpp"
 #include "run/checkpoints.hpp"
 #include "run/interrupt.hpp"
@@ -85,12 +85,11 @@ void checkpoint_now(State& s, Recorder& rec, StepRule& rule, double wall, bool a
   }
 }
 
-// A case with a grip (pd/grip.hpp) starts at rest with its grip taken, from its own initial state
-// or a checkpoint's; validation refuses a grip with the MPM.
-void take_grip(pd::State& s, const case_file::Case& c) {
-  if (c.grip) pd::take_grip(s, *c.grip);
+// A case with a grip (bodies/grip.hpp) starts at rest with its grip taken, from its own initial
+// state or a checkpoint's.
+void take_grip(bodies::Bodies& s, const case_file::Case& c) {
+  if (c.grip) bodies::take_grip(s, *c.grip);
 }
-void take_grip(mpm::State&, const case_file::Case&) {}
 
 }  // namespace
 

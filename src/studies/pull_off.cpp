@@ -34,31 +34,88 @@ std::size_t gripped_body(const case_file::Case& c, const PullOffOptions& o) {
                    "has no body that moved at t = 0 to pull off: name it with --body");
 }
 
-// The pull's direction: away from the substrate, against the body's impact velocity (+z if it
-// had none), or, in shear, along x.
-Eigen::Vector3d pull_direction(const case_file::Case& c, std::size_t body,
-                               const PullOffOptions& o) {
-  if (o.shear) {
-    if (c.symmetry && c.symmetry->x)
-      throw InputError("--direction", "",
-                       "shear pulls along x, across the impact's symmetry plane x = " +
-                           fmt::format("{:g}", *c.symmetry->x * 1e6) +
-                           " um: pull off a whole model (impact --symmetry none)");
-    return Eigen::Vector3d::UnitX();
-  }
+// Away from the substrate: against the body's impact velocity (+z if it had none).
+Eigen::Vector3d away_from_substrate(const case_file::Case& c, std::size_t body) {
   const Eigen::Vector3d v0 = c.bodies[body].velocity;
   // (0 - v: no negative zeros in summary.json.)
   return v0.norm() > 0.0 ? Eigen::Vector3d(Eigen::Vector3d::Zero() - v0.normalized())
                          : Eigen::Vector3d::UnitZ();
 }
 
+// The pull's direction: away from the substrate, or, in shear, along x, which needs a model
+// that is neither r-z nor cut at x = const.
+Eigen::Vector3d pull_direction(const case_file::Case& c, std::size_t body,
+                               const run::InterfaceAreas& areas, const PullOffOptions& o) {
+  if (!o.shear) return away_from_substrate(c, body);
+  if (areas.axisymmetric)
+    throw InputError("--direction", "",
+                     "shear pushes along x, which an axisymmetric (r-z) model cannot: pull off a "
+                     "3D model");
+  if (areas.mirror_plane[0])
+    throw InputError("--direction", "",
+                     "shear pulls along x, across the impact's symmetry plane x = " +
+                         fmt::format("{:g}", *areas.mirror_plane[0] * 1e6) +
+                         " um: pull off a whole model (impact --symmetry none)");
+  return Eigen::Vector3d::UnitX();
+}
+
 // From the modelled part to the whole: 2 per symmetry plane the pull lies in (the force across
-// the interface is the same on both sides of it).
-double whole_factor(const case_file::Case& c, const Eigen::Vector3d& direction) {
+// the interface is the same on both sides of it); an r-z model's forces are its rings'.
+double whole_factor(const run::InterfaceAreas& areas, const Eigen::Vector3d& direction) {
+  if (areas.axisymmetric) return 1.0;
   double factor = 1.0;
-  if (c.symmetry && c.symmetry->x && direction.x() == 0.0) factor *= 2.0;
-  if (c.symmetry && c.symmetry->y && direction.y() == 0.0) factor *= 2.0;
+  for (int d = 0; d < 2; ++d)
+    if (areas.mirror_plane[d] && direction[d] == 0.0) factor *= 2.0;
   return factor;
+}
+
+// Whether anything holds the body to the others: the MPM's bonding model, or an adhesive
+// peridynamic contact law.
+bool holds_bonds(const case_file::Case& c) {
+  return c.solver.method == case_file::Method::Mpm
+             ? c.bonding.model != case_file::BondingModel::None
+             : c.contact.model != case_file::ContactModel::Repulsive;
+}
+
+// The default travel: for peridynamics three spacings of the splat, beyond the reach of either
+// adhesive law; for the MPM, twice the bonded points' mean opening to failure (delta_c of the
+// debonding law) plus two cells, or two cells for bonds that never let go.
+double default_distance(const case_file::Case& c, std::size_t body,
+                        const run::InterfaceAreas& areas) {
+  if (c.solver.method != case_file::Method::Mpm) return 3.0 * c.bodies[body].spacing;
+  double opening = 0.0, area = 0.0;
+  for (const run::InterfacePoint& q : areas.points) {
+    if (!(q.strength > 0.0)) continue;  // carries nothing (a melted point's flow stress is 0)
+    opening += q.area * q.critical_opening;
+    area += q.area;
+  }
+  return (area > 0.0 ? 2.0 * opening / area : 0.0) + 2.0 * c.grid->cell_size;
+}
+
+// The MPM's substrate is held at its bottom during the pull, as the PD's is in its impact: the
+// absorbing dashpots of the impact would let it follow the grip.
+void hold_bottoms(case_file::Case& c, std::size_t pulled) {
+  if (c.solver.method != case_file::Method::Mpm) return;
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    if (b == pulled) continue;
+    auto& absorbing = c.bodies[b].absorbing;
+    const auto bottom = std::find(absorbing.begin(), absorbing.end(), case_file::BodyFace::Bottom);
+    if (bottom == absorbing.end()) continue;
+    absorbing.erase(bottom);
+    c.bodies[b].fixed.push_back(case_file::BodyFace::Bottom);
+  }
+}
+
+// Each bonded point's strength at the start of the pull, for the radial profile.
+void write_interface(const std::filesystem::path& file, const run::InterfaceAreas& areas) {
+  io::write_atomically(file, [&](std::ostream& out) {
+    out << "x,y,z,radius,area,bond,damage,strength,critical_opening\n";
+    for (const run::InterfacePoint& q : areas.points)
+      out << fmt::format(
+          "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n",
+          q.position[0], q.position[1], q.position[2], q.radius, q.area, q.bond, q.damage,
+          q.strength, q.critical_opening);
+  });
 }
 
 // The grip's travel at time t: the integral of its ramped speed (pd/grip.hpp).
@@ -99,22 +156,30 @@ PullOffResult pull_off(const PullOffOptions& o) {
   const std::filesystem::path checkpoint = run::find_checkpoint(o.impact);
   const case_file::Case impact = run::checkpoint_case(checkpoint);
   case_file::Case c = impact;
-  if (c.solver.method != case_file::Method::Peridynamics)
-    throw InputError(o.impact.string(), "",
-                     "is an MPM result: the pull-off test takes peridynamics results (the MPM's "
-                     "is issue 26)");
   if (!(o.speed > 0.0)) throw InputError("--speed", "", "must be positive");
   if (!(o.fraction > 0.0 && o.fraction <= 1.0)) throw InputError("--grip", "", "must be in (0, 1]");
   const std::size_t body = gripped_body(c, o);
-  const Eigen::Vector3d direction = pull_direction(c, body, o);
-  const double distance = o.distance > 0.0 ? o.distance : 3.0 * c.bodies[body].spacing;
+  PullOffResult r;
+  const run::InterfaceAreas areas = run::interface_areas(impact, checkpoint, body);
+  r.bonded_area = areas.bonded;
+  r.projected_area = areas.projected;
+  const Eigen::Vector3d direction = pull_direction(c, body, areas, o);
+  if (!holds_bonds(c))
+    throw InputError(o.impact.string(), "",
+                     c.solver.method == case_file::Method::Mpm
+                         ? "was run without bonding (bonding.model: none): no bond holds the "
+                           "splat to pull off"
+                         : "was run with the repulsive contact (contact.model: repulsive): no "
+                           "adhesion holds the splat to pull off");
+  const double distance = o.distance > 0.0 ? o.distance : default_distance(c, body, areas);
   const double duration = distance / o.speed;
 
-  // The pull: the impact's case from its checkpoint's state, at rest, gripped.
+  // The pull: the impact's case from its checkpoint's state, at rest, its upper part gripped.
   c.name += "-pull-off";
   for (case_file::Body& b : c.bodies) b.velocity.setZero();
-  c.grip =
-      case_file::Grip{c.bodies[body].name, o.fraction, o.speed * direction, kRampShare * duration};
+  hold_bottoms(c, body);
+  c.grip = case_file::Grip{c.bodies[body].name, o.fraction, o.speed * direction,
+                           away_from_substrate(impact, body), kRampShare * duration};
   c.solver.end_time = duration;
   c.output.history_interval = duration / 1000.0;
   c.output.snapshot_interval = duration / 4.0;
@@ -122,10 +187,6 @@ PullOffResult pull_off(const PullOffOptions& o) {
   c.output.probes.clear();
   c.metrics.verdict_extensions = 0;
 
-  PullOffResult r;
-  const run::InterfaceAreas areas = run::interface_areas(impact, checkpoint, body);
-  r.bonded_area = areas.bonded;
-  r.projected_area = areas.projected;
   run::run_case(c, {o.out / "run", o.progress, {}, checkpoint});
 
   // The force on the body from the others along the pull, with its sign turned: positive holds
@@ -134,7 +195,7 @@ PullOffResult pull_off(const PullOffOptions& o) {
   const auto columns = io::read_csv_columns(
       o.out / "run" / "history.csv",
       {"time", name + ".contact_fx", name + ".contact_fy", name + ".contact_fz"});
-  const double factor = whole_factor(c, direction);
+  const double factor = whole_factor(areas, direction);
   for (std::size_t k = 0; k < columns[0].size(); ++k) {
     const Eigen::Vector3d f(columns[1][k], columns[2][k], columns[3][k]);
     r.displacement.push_back(grip_travel(o.speed, c.grip->ramp, columns[0][k]));
@@ -151,6 +212,7 @@ PullOffResult pull_off(const PullOffOptions& o) {
   r.final_force = r.force.back();
   r.separated = r.peak_force > 0.0 && std::abs(r.final_force) <= kSeparatedShare * r.peak_force;
   write_results(o, r, name, direction);
+  if (!areas.points.empty()) write_interface(o.out / "interface.csv", areas);
   return r;
 }
 

@@ -115,11 +115,9 @@ TEST(SolverSections, ContactModelTwoParametersAreChecked) {
 TEST(SolverSections, TheGripIsChecked) {
   const std::string spheres = "verification/pd-elastic-spheres.yaml";
   const Override velocity{"grip.velocity", "[0, 0, 1 m/s]"};
-  const InputError mpm = input_error([&] {
-    load_case(example("al-14um-810.yaml"), {{"grip.body", "particle"}, velocity});
-  });
-  EXPECT_EQ(mpm.key(), "grip");
-  EXPECT_TRUE(contains(mpm.message(), "is peridynamics only")) << mpm.message();
+  // Both solvers take a grip (the pull-off test, docs/pull-off.md).
+  const Case mpm = load_case(example("al-14um-810.yaml"), {{"grip.body", "particle"}, velocity});
+  EXPECT_EQ(mpm.grip->body, "particle");
   expect_error(spheres, {{"grip.body", "middle"}, velocity}, "grip.body", "upper");
   expect_error(spheres, {{"grip.body", "upper"}, {"grip.velocity", "[0, 0, 0 m/s]"}},
                "grip.velocity", "must not be zero");

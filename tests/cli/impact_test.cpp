@@ -98,7 +98,9 @@ TEST(Impact, WriteCaseGivesTheThesisGeometryAndPassesCheck) {
   EXPECT_DOUBLE_EQ(c.solver.end_time, 80e-9);
   EXPECT_EQ(c.contact.normal_body, "substrate");
   // Energy bonding with the schema's parameters (the thesis' calibration, §5.1.4).
-  EXPECT_EQ(c.bonding, case_file::Bonding{.model = case_file::BondingModel::Energy});
+  case_file::Bonding energy;
+  energy.model = case_file::BondingModel::Energy;
+  EXPECT_EQ(c.bonding, energy);
   EXPECT_DOUBLE_EQ(c.output.history_interval, 0.5e-9);
   EXPECT_DOUBLE_EQ(c.output.snapshot_interval, 10e-9);
 }

@@ -101,16 +101,16 @@ TEST(PullOff, RefusesAFolderWithoutACheckpoint) {
   EXPECT_FALSE(fs::exists(dir / "empty-pull-off"));
 }
 
-TEST(PullOff, RefusesAnMpmResult) {
+TEST(PullOff, RefusesARunWithoutBonding) {
   const fs::path dir = make_temp_dir("pull-off");
   const auto mpm = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
                                      "/examples/verification/bonding-impact.yaml' --out mpm "
-                                     "--quiet --set solver.end_time=0.5ns",
+                                     "--quiet --set solver.end_time=0.5ns --set bonding.model=none",
                                  dir.string());
   ASSERT_EQ(mpm.status, 0) << mpm.output;
   const auto r = run_coldspray("pull-off mpm", dir.string());
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("is an MPM result"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mpm: was run without bonding"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "mpm-pull-off"));
 }
 

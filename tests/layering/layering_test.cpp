@@ -25,7 +25,9 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies"}},
     {"pd", {"core", "case", "materials", "geometry", "bodies"}},
     {"checkpoint", {"core", "io", "bodies", "mpm", "pd"}},
-    {"run", {"core", "case", "materials", "io", "bodies", "metrics", "mpm", "pd", "checkpoint"}},
+    {"run",
+     {"core", "case", "materials", "io", "bodies", "bonding", "metrics", "mpm", "pd",
+      "checkpoint"}},
     {"studies", {"core", "case", "io", "run"}},
     {"cli", {"core", "case", "io", "material_test", "mpm", "pd", "run", "studies"}},
 };

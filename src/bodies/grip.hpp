@@ -1,0 +1,28 @@
+// The rigid grip of the pull-off test (docs/pull-off.md; PD paper Fig 11: "the particle is
+// rigidly displaced away from the substrate"), for either solver. At the run's start every point
+// is set at rest and the points of the gripped body in the last `fraction` of its extent along
+// the grip's side (its velocity's direction unless set) are taken: from then on they move at the
+// grip's velocity (the solver's kick, pd/stepper.cpp, or velocity update, mpm/phases.hpp), and
+// the force that keeps them from accelerating is the grip's, whose work the budget books with the
+// holds'.
+#pragma once
+
+#include "bodies/bodies.hpp"
+#include "case/case.hpp"
+
+namespace coldspray::bodies {
+
+// Sizes the per-point grip flags (none taken) and keeps the case's grip velocity and ramp.
+void prepare_grip(Bodies& s, const std::optional<case_file::Grip>& grip);
+
+// The grip's velocity at time t: (1 - cos(pi t / ramp)) / 2 of its full velocity until the ramp
+// ends, then all of it.
+Eigen::Vector3d grip_velocity_at(const Bodies& s, double t);
+
+// Sets every point at rest and grips the body's points whose projection on the grip's side lies
+// in the last `fraction` of the body's range, which then move at the grip's velocity. InputError
+// (key grip.fraction) if a point of another body lies within the box the gripped points span:
+// the grip would reach into the substrate, which would follow it through contact.
+void take_grip(Bodies& s, const case_file::Grip& grip);
+
+}  // namespace coldspray::bodies
