@@ -61,8 +61,8 @@ void ContactNodes::grow(std::size_t slots) {
   pair_touching.resize(slots * kMaxPairsPerNode);
   pair_bonded_sides.resize(slots * kMaxPairsPerNode);
   pair_bond_forms.resize(slots * kMaxPairsPerNode);
-  for (auto* v : {&bond_weight, &bond_strength, &bond_share, &bond_damage, &side_area[0],
-                  &side_area[1], &opened_damage})
+  for (auto* v : {&bond_weight, &bond_strength, &bond_share, &bond_damage, &side_weight[0],
+                  &side_weight[1], &bond_area, &opened_damage})
     v->resize(slots * kMaxPairsPerNode);
   bond_sum.resize(slots * kMaxBodiesPerNode);
   surface_count.resize(slots * kMaxBodiesPerNode);
@@ -166,7 +166,7 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
         c.pair_bonded_sides[k] = 0;
         c.pair_bond_forms[k] = 0;
         c.bond_weight[k] = c.bond_strength[k] = c.bond_share[k] = c.bond_damage[k] = 0.0;
-        c.side_area[0][k] = c.side_area[1][k] = c.opened_damage[k] = 0.0;
+        c.side_weight[0][k] = c.side_weight[1][k] = c.bond_area[k] = c.opened_damage[k] = 0.0;
       }
   }
 }
@@ -198,8 +198,8 @@ Vector3d cohesive_bond_force(ContactNodes& c, std::size_t k, const ContactRule& 
   const double strength = c.bond_strength[k] / w;
   const double damage = c.bond_damage[k] / w;
   const double capacity = bonding::traction_capacity(strength, damage);
-  const double area = 0.5 * (c.side_area[0][k] + c.side_area[1][k]);
-  const double carried = bonding::effective_traction(stick / (dt * area), n, law.shear_ratio);
+  const double carried =
+      bonding::effective_traction(stick / (dt * c.bond_area[k]), n, law.shear_ratio);
   if (carried <= capacity) return stick;
   const double scale = capacity / carried;
   const double normal = stick.dot(n);
@@ -249,7 +249,10 @@ void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bo
         // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
         const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
         const double normal = stick.dot(n);
-        const bool cohesive = bonded && rule.debond.enabled && c.bond_weight[k] > 0.0;
+        // (A body with next to no mass at the node, below the floor, has no velocity there to
+        // open the bond with: its share of the bond passes elsewhere.)
+        const bool cohesive = bonded && rule.debond.enabled && c.bond_area[k] > 0.0 &&
+                              std::min(mm, ms) > rule.mass_floor;
         Vector3d dp = cohesive ? cohesive_bond_force(c, k, rule, dt, stick, n, pm, ps, mm, ms)
                       : bonded ? stick
                                : Vector3d(normal * n);

@@ -74,19 +74,19 @@ class ContactNodes {
   // surface points of both bodies covering the node are bonded from then on.
   std::vector<std::uint8_t> pair_bond_forms;
   static constexpr std::uint8_t kLowerSide = 1, kHigherSide = 2;
-  // The debonding law's view of a pair's bond at the node (bonding/cohesive_law.hpp), summed over
+  // The debonding law's view of a pair's bond at the node (bonding/cohesive_law.hpp). Summed over
   // the bonded points of both bodies covering it, each bonded to the other: sum N_I, sum N_I s_p
   // sigma_p, sum N_I s_p (s_p = min(D_bond, 1), sigma_p the point's full-bond strength) and sum
   // N_I d_p (damage), whose weighted means are the node's strength, share of the full fracture
-  // energy and damage; per side (the pair's lower and higher entry), sum N_I a_p, a_p the surface
-  // area the point stands for; the node's share of the bond's area is their mean (a flat
-  // interface between node layers puts a share on layers one side barely reaches: docs/bonding.md,
-  // "Debonding", measured shortfall). `opened_damage`: the damage the step's opening added there.
+  // energy and damage; and per side (the pair's lower and higher entry) sum N_I. `bond_area` is
+  // the bond's area the node carries (mpm/phases.hpp, spread_bond_areas) and `opened_damage` the
+  // damage the step's opening added there.
   std::vector<double> bond_weight;
   std::vector<double> bond_strength;
   std::vector<double> bond_share;
   std::vector<double> bond_damage;
-  std::array<std::vector<double>, 2> side_area;
+  std::array<std::vector<double>, 2> side_weight;
+  std::vector<double> bond_area;
   std::vector<double> opened_damage;
 
   // Per entry, for the nodal bonding parameter (eq 4.6): sum over the body's surface points
@@ -118,6 +118,7 @@ struct ContactRule {
   // With bonding, what a bond carries before it lets go (`bonding.debond`); disabled, a bond
   // holds for good.
   bonding::CohesiveLaw debond;
+  double mass_floor = 0.0;  // kg: lighter nodes carry no velocity (State::mass_floor)
 };
 
 // The MVG choice of master bodies, kept from step to step, and its per-step scratch.

@@ -151,15 +151,14 @@ inline std::ptrdiff_t mark_bonded_side(ContactNodes& cn, std::int32_t slot, int 
 
 // A bonded point's share, weight w = N_I(x_p), of the debonding law's sums at pair k
 // (ContactNodes::bond_weight and after).
-template <bool Axisymmetric>
-void add_to_bond_sums(ContactNodes& cn, const bonding::CohesiveLaw& law, const Points& P,
-                      std::size_t p, std::size_t k, bool lower_side, double w) {
+inline void add_to_bond_sums(ContactNodes& cn, const bonding::CohesiveLaw& law, const Points& P,
+                             std::size_t p, std::size_t k, bool lower_side, double w) {
   const double share = w * bonding::bonded_share(P.bond[p]);
   cn.bond_weight[k] += w;
   cn.bond_strength[k] += share * law.full_strength(P.flow_stress[p]);
   cn.bond_share[k] += share;
   cn.bond_damage[k] += w * P.bond_damage[p];
-  cn.side_area[lower_side ? 0 : 1][k] += w * bodies::point_area(P, p, Axisymmetric);
+  cn.side_weight[lower_side ? 0 : 1][k] += w;
 }
 
 // What the contact step needs from the points near contact nodes. For the gap check: along each
@@ -198,8 +197,8 @@ void gather_contact_points(State& s) {
           const int partner = P.bonded_to[p] - 1;
           const std::ptrdiff_t k = mark_bonded_side(cn, slot, e, partner);
           if (k >= 0 && debond.enabled)
-            add_to_bond_sums<Axisymmetric>(cn, debond, P, p, static_cast<std::size_t>(k),
-                                           e < cn.find(slot, partner), w);
+            add_to_bond_sums(cn, debond, P, p, static_cast<std::size_t>(k),
+                             e < cn.find(slot, partner), w);
         }
       }
       if (!gap) return;
@@ -221,16 +220,82 @@ void gather_contact_points(State& s) {
   });
 }
 
+// How much of a bonded point's bond passes through the node at `slot`, per unit N_I, where its
+// entry e meets its partner's entry o: the partner side's share of the bonded weight there,
+// W_o / (W_e + W_o), 0 where the pair is not bonded. The force between the bodies passes where
+// both have material: a flat interface on a node layer carries it all on that layer, where each
+// side puts three quarters of its points' weight and the other side as much, while the layers
+// beyond, which one side alone reaches, carry none (tests/mpm/debond_test.cpp).
+inline double bond_passage(const ContactNodes& cn, std::size_t k, int e, int o) {
+  if (!bond_holds(cn.pair_bonded_sides[k])) return 0.0;
+  const double own = cn.side_weight[e < o ? 0 : 1][k], other = cn.side_weight[e < o ? 1 : 0][k];
+  return other / (own + other);
+}
+
+// Calls f(k, N_I bond_passage) for each node where a bonded point's bond passes, k its pair.
+template <class Stencil, class F>
+void for_each_bond_node(const State& s, const Stencil& st, std::size_t p, F&& f) {
+  const ContactNodes& cn = s.contact;
+  const int b = s.points.body[p], partner = s.points.bonded_to[p] - 1;
+  st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
+    const std::int32_t slot = s.grid.contact_slot[node];
+    if (slot < 0 || w == 0.0) return;
+    const int e = cn.find(slot, b), o = cn.find(slot, partner);
+    if (o < 0) return;
+    const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
+    const double passage = w * bond_passage(cn, k, e, o);
+    if (passage > 0.0) f(k, passage);
+  });
+}
+
+// The debonding law's area of the bond at each node (ContactNodes::bond_area): each bonded
+// point's surface area a_p spread over the nodes where its bond passes, in proportion to N_I
+// bond_passage, and both sides' shares averaged. Over a pair's nodes the areas add up to the mean
+// of its two sides' bonded areas. In block order, as the other point-to-grid phases.
+template <class Shape, bool Axisymmetric>
+void spread_bond_areas(State& s) {
+  ContactNodes& cn = s.contact;
+  const Points& P = s.points;
+  if (cn.size() == 0) return;
+  for_each_point_by_block(s.blocks, [&](std::size_t p) {
+    if (P.bonded_to[p] == 0) return;
+    const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
+    if (!near_contact(s, st)) return;
+    double total = 0.0;
+    for_each_bond_node(s, st, p, [&](std::size_t, double passage) { total += passage; });
+    if (total == 0.0) return;
+    const double half_area = 0.5 * bodies::point_area(P, p, Axisymmetric) / total;
+    for_each_bond_node(
+        s, st, p, [&](std::size_t k, double passage) { cn.bond_area[k] += half_area * passage; });
+  });
+}
+
+// The damage the step's opening added to a bonded point's bond: the mean of its nodes'
+// (ContactNodes::opened_damage), weighted as its area is spread (spread_bond_areas). At damage 1,
+// or where its bond passes no node any more (its partner's bonded points no longer meet it: the
+// bond opened beyond the grid's reach or let go on the other side), the point lets go of it.
+template <class Stencil>
+void damage_bond(State& s, const Stencil& st, std::size_t p) {
+  Points& P = s.points;
+  double largest = 0.0, opened = 0.0;
+  for_each_bond_node(s, st, p, [&](std::size_t k, double passage) {
+    if (passage <= largest) return;
+    largest = passage;
+    opened = s.contact.opened_damage[k];
+  });
+  P.bond_damage[p] = largest > 0.0 ? std::min(1.0, P.bond_damage[p] + opened) : 1.0;
+  if (P.bond_damage[p] >= 1.0) P.bonded_to[p] = 0;
+}
+
 // The bonding set S (thesis §4.1.1): a surface point is in contact this step where a node it
 // covers has its body touching another (ContactNodes::pair_touching); its contact normal, the
 // weighted mean of those pairs' normals turned outward from its own body, orients the shear
 // part of its plastic strain (bonding/bond_law.hpp). A surface point covering a node where a bond
 // formed this step (ContactNodes::pair_bond_forms: it entered that node's eq 4.6) keeps the bond
 // to the other body from then on (Points::bonded_to), so that the bond no longer depends on which
-// points the moving material brings to the node, unless its own bond broke before. A bonded
-// point adds the N-weighted mean of the damage the step's opening added at the nodes where its
-// bond acts (ContactNodes::opened_damage) and lets go of its bond when its damage reaches 1.
-// Writes only its own point.
+// points the moving material brings to the node, unless its own bond broke before. With the
+// debonding law, a bonded point first takes its bond's damage (damage_bond). Writes only its own
+// point.
 template <class Shape, bool Axisymmetric>
 void mark_touching_points(State& s) {
   if (!s.contact_rule.bonding) return;
@@ -242,12 +307,12 @@ void mark_touching_points(State& s) {
   for (long pi = 0; pi < n; ++pi) {
     const auto p = static_cast<std::size_t>(pi);
     P.touching[p] = 0;
-    if (!P.surface[p] || cn.size() == 0) continue;
+    if (!P.surface[p]) continue;
     const auto& st = stencil_of<Shape, Axisymmetric>(s, p);
-    if (!near_contact(s, st)) continue;
+    if (debond && P.bonded_to[p] != 0) damage_bond(s, st, p);
+    if (cn.size() == 0 || !near_contact(s, st)) continue;
     const int b = P.body[p];
-    const std::uint16_t bonded_to = P.bonded_to[p];
-    double normal[3] = {0.0, 0.0, 0.0}, opened = 0.0, weight = 0.0;
+    double normal[3] = {0.0, 0.0, 0.0};
     st.for_each(s.layout, [&](std::size_t node, double w, double, double, double) {
       const std::int32_t slot = s.grid.contact_slot[node];
       if (slot < 0 || w == 0.0) return;
@@ -257,10 +322,6 @@ void mark_touching_points(State& s) {
         const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
         if (cn.pair_bond_forms[k] && P.bonded_to[p] == 0 && P.bond_damage[p] < 1.0)
           P.bonded_to[p] = static_cast<std::uint16_t>(cn.body(slot, o) + 1);
-        if (debond && bonded_to == cn.body(slot, o) + 1 && cn.bond_weight[k] > 0.0) {
-          opened += w * cn.opened_damage[k];
-          weight += w;
-        }
         if (!cn.pair_touching[k]) continue;
         P.touching[p] = 1;
         const double outward = cn.pair_master[k] == e ? w : -w;
@@ -270,10 +331,6 @@ void mark_touching_points(State& s) {
     const double norm =
         std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     for (int d = 0; d < 3; ++d) P.contact_normal[d][p] = norm > 0.0 ? normal[d] / norm : 0.0;
-    if (weight > 0.0) {
-      P.bond_damage[p] = std::min(1.0, P.bond_damage[p] + opened / weight);
-      if (P.bond_damage[p] >= 1.0) P.bonded_to[p] = 0;
-    }
   }
 }
 

@@ -195,6 +195,7 @@ State build_state(const case_file::Case& c) {
   s.contact_result.master.assign(c.bodies.size() * c.bodies.size(), 0);
 
   s.mass_floor = 1e-10 * *std::min_element(P.mass.begin(), P.mass.end());
+  s.contact_rule.mass_floor = s.mass_floor;
   s.heat_conduction = c.solver.heat_conduction;
   if (s.heat_conduction) {
     s.grid.heat.resize(s.layout.node_count());

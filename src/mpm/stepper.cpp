@@ -131,6 +131,8 @@ void musl_to_contact(State& s) {
   choose_contact_normals(s.contact, s.contact_rule,     // step 4, eq 3.30
                          s.constraint, bodies, s.contact_result);
   gather_contact_points<Shape, Axisymmetric>(s);  //   surfaces, nodal D_bond (4.6)
+  if (s.contact_rule.debond.enabled)              //   the bonds' areas at the nodes
+    spread_bond_areas<Shape, Axisymmetric>(s);
 }
 
 // Steps 4-12 from the contact decision on.

@@ -78,18 +78,21 @@ bool holds_bonds(const case_file::Case& c) {
 }
 
 // The default travel: for peridynamics three spacings of the splat, beyond the reach of either
-// adhesive law; for the MPM, twice the bonded points' mean opening to failure (delta_c of the
-// debonding law) plus two cells, or two cells for bonds that never let go.
+// adhesive law; for the MPM, twice the opening its bonds let go at, the debonding law's delta_c
+// (the mean of the bonded points that carry a traction) but at most two cells, as the grid sees
+// an opening only while both bodies share nodes, plus two cells; two cells for bonds that never
+// let go.
 double default_distance(const case_file::Case& c, std::size_t body,
                         const run::InterfaceAreas& areas) {
   if (c.solver.method != case_file::Method::Mpm) return 3.0 * c.bodies[body].spacing;
+  const double cell = c.grid->cell_size;
   double opening = 0.0, area = 0.0;
   for (const run::InterfacePoint& q : areas.points) {
     if (!(q.strength > 0.0)) continue;  // carries nothing (a melted point's flow stress is 0)
     opening += q.area * q.critical_opening;
     area += q.area;
   }
-  return (area > 0.0 ? 2.0 * opening / area : 0.0) + 2.0 * c.grid->cell_size;
+  return (area > 0.0 ? 2.0 * std::min(opening / area, 2.0 * cell) : 0.0) + 2.0 * cell;
 }
 
 // The MPM's substrate is held at its bottom during the pull, as the PD's is in its impact: the
