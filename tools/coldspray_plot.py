@@ -866,6 +866,56 @@ def command_pull_off(options):
     save_figure(fig, options.out, options.dpi)
 
 
+def _speed(text):
+    """The impact speed of a varied velocity such as "[0,0,-800 m/s]": its last number's size."""
+    numbers = re.findall(r"[-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?", text)
+    if not numbers:
+        raise PlotError(f"no number in the velocity '{text}'")
+    return abs(float(numbers[-1]))
+
+
+def command_bond_strength(options):
+    """Bond strength against impact speed from a `coldspray sweep --pull-off` over the particle's
+    velocity (over the bonded and the projected area), and the radial profile of one splat's bond
+    strength (its pull-off's interface.csv: each bonded point's strength at the start)."""
+    folder = require_dir(options.dir)
+    rows = read_csv_rows(os.path.join(folder, "sweep.csv"))
+    key = options.key
+    for column in (key, "pull_off.strength_bonded", "pull_off.strength_projected"):
+        if column not in rows[0]:
+            raise PlotError(f"{folder}/sweep.csv: no column '{column}' (a sweep over {key} "
+                            "with --pull-off makes them)")
+    done = sorted(((_speed(r[key]), r) for r in rows if r["status"] == "ok"),
+                  key=lambda item: item[0])
+    if not done:
+        raise PlotError(f"{folder}/sweep.csv: no finished case")
+    profile = options.profile or max(
+        done, key=lambda item: _to_float(item[1]["pull_off.strength_projected"]))[1]["case"]
+    fig, (left, right) = plt.subplots(1, 2, layout="constrained",
+                                      figsize=(2 * options.panel_width, 3.8))
+    speeds = [v for v, _ in done]
+    for column, label in (("pull_off.strength_bonded", "over the bonded area"),
+                          ("pull_off.strength_projected", "over the projected area")):
+        left.plot(speeds, [_to_float(r[column]) * 1e-6 for _, r in done], "o-", label=label)
+    left.set_xlabel("impact speed (m/s)")
+    left.set_ylabel("bond strength (MPa)")
+    left.grid(True, alpha=0.3)
+    left.legend(fontsize="small")
+    points = read_csv_rows(os.path.join(require_dir(os.path.join(folder, profile)), "pull-off",
+                                        "interface.csv"))
+    right.scatter([_to_float(p["radius"]) * 1e6 for p in points],
+                  [_to_float(p["strength"]) * 1e-6 for p in points],
+                  c=[min(_to_float(p["bond"]), 1.0) for p in points], cmap="viridis", vmin=0,
+                  vmax=1, s=12)
+    right.set_xlabel("radius from the splat's axis (um)")
+    right.set_ylabel("strength of the bonded point (MPa)")
+    speed = dict((r["case"], v) for v, r in done).get(profile)
+    right.set_title(f"{profile}" + (f", {speed:g} m/s" if speed is not None else "") +
+                    ": colour min(D_bond, 1)", fontsize="small")
+    right.grid(True, alpha=0.3)
+    save_figure(fig, options.out, options.dpi)
+
+
 PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
                     "critical_strain": (r"$\epsilon_c$", 1.0),
@@ -1053,6 +1103,19 @@ def build_parser():
     pull.add_argument("--dpi", type=int, default=150)
     pull.add_argument("--out", required=True, help="PNG file to write")
     pull.set_defaults(run=command_pull_off)
+
+    bond = commands.add_parser("bond-strength", help="bond strength against impact speed and "
+                                                     "one splat's radial profile (coldspray "
+                                                     "sweep --pull-off)")
+    bond.add_argument("dir", help="sweep output folder (sweep.csv, CASE/pull-off/)")
+    bond.add_argument("--key", default="bodies.particle.velocity",
+                      help="the varied velocity key (default bodies.particle.velocity)")
+    bond.add_argument("--profile", help="the case whose radial profile to draw (default: the "
+                                        "strongest over its projected area)")
+    bond.add_argument("--panel-width", type=float, default=5.0, help="inches per panel")
+    bond.add_argument("--dpi", type=int, default=150)
+    bond.add_argument("--out", required=True, help="PNG file to write")
+    bond.set_defaults(run=command_bond_strength)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

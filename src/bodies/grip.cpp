@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/error.hpp"
 
@@ -21,47 +22,88 @@ Eigen::Vector3d grip_velocity_at(const Bodies& s, double t) {
   return 0.5 * (1.0 - std::cos(std::numbers::pi * t / s.grip_ramp)) * s.grip_velocity;
 }
 
+namespace {
+
+Eigen::Vector3d position(const Points& P, std::size_t i) {
+  return {P.position[0][i], P.position[1][i], P.position[2][i]};
+}
+
+// The first point of another body within the box that the body's points `taken` span, if any.
+template <class Taken>
+std::optional<std::size_t> other_point_in_box(const Bodies& s, const BodyRange& body,
+                                              Taken&& taken) {
+  const Points& P = s.points;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(std::numeric_limits<double>::lowest());
+  for (std::size_t i = body.begin; i < body.end; ++i)
+    if (taken(i)) {
+      lo = lo.cwiseMin(position(P, i));
+      hi = hi.cwiseMax(position(P, i));
+    }
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (i >= body.begin && i < body.end) continue;
+    const Eigen::Vector3d x = position(P, i);
+    if ((x.array() >= lo.array()).all() && (x.array() <= hi.array()).all()) return i;
+  }
+  return std::nullopt;
+}
+
+// The body's axis along `side`: a point on it, its centroid, or on the planes it was cut at (r-z:
+// r = 0).
+Eigen::Vector3d axis_point(const Points& P, const BodyRange& body) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double mass = 0.0;
+  for (std::size_t i = body.begin; i < body.end; ++i) {
+    centroid += P.mass[i] * position(P, i);
+    mass += P.mass[i];
+  }
+  centroid /= mass;
+  for (int d = 0; d < 2; ++d)
+    if (body.mirror_plane[d]) centroid[d] = *body.mirror_plane[d];
+  return centroid;
+}
+
+}  // namespace
+
 void take_grip(Bodies& s, const case_file::Grip& grip) {
   Points& P = s.points;
   for (int d = 0; d < 3; ++d) std::fill(P.velocity[d].begin(), P.velocity[d].end(), 0.0);
-  const auto body = std::find_if(s.bodies.begin(), s.bodies.end(),
-                                 [&](const BodyRange& b) { return b.name == grip.body; });
+  const BodyRange& body = *std::find_if(s.bodies.begin(), s.bodies.end(),
+                                        [&](const BodyRange& b) { return b.name == grip.body; });
   const Eigen::Vector3d side = (grip.side.norm() > 0.0 ? grip.side : grip.velocity).normalized();
-  auto along = [&](std::size_t i) {
-    return side.dot(Eigen::Vector3d(P.position[0][i], P.position[1][i], P.position[2][i]));
-  };
+  auto along = [&](std::size_t i) { return side.dot(position(P, i)); };
   double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
-  for (std::size_t i = body->begin; i < body->end; ++i) {
+  for (std::size_t i = body.begin; i < body.end; ++i) {
     lo = std::min(lo, along(i));
     hi = std::max(hi, along(i));
   }
   const double from = grip.fraction >= 1.0 ? lo : hi - grip.fraction * (hi - lo);
-  // The box the gripped points span: no point of another body may lie in it.
-  Eigen::Vector3d box_lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector3d box_hi = Eigen::Vector3d::Constant(std::numeric_limits<double>::lowest());
-  auto position = [&](std::size_t i) {
-    return Eigen::Vector3d(P.position[0][i], P.position[1][i], P.position[2][i]);
+  auto upper = [&](std::size_t i) { return along(i) >= from; };
+  // Where the upper part's box takes in another body's points (a splat whose jetted rim folds up
+  // over the crater's lip), only its core: the points within the body's initial radius of its
+  // axis.
+  const Eigen::Vector3d axis = axis_point(P, body);
+  auto core = [&](std::size_t i) {
+    const Eigen::Vector3d r = position(P, i) - axis;
+    return upper(i) && (r - r.dot(side) * side).norm() <= 0.5 * body.initial_diameter;
   };
-  for (std::size_t i = body->begin; i < body->end; ++i)
-    if (along(i) >= from) {
-      box_lo = box_lo.cwiseMin(position(i));
-      box_hi = box_hi.cwiseMax(position(i));
-    }
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (i >= body->begin && i < body->end) continue;
-    const Eigen::Vector3d x = position(i);
-    if ((x.array() >= box_lo.array()).all() && (x.array() <= box_hi.array()).all())
+  const bool whole = !other_point_in_box(s, body, upper);
+  if (!whole)
+    if (const auto clash = other_point_in_box(s, body, core)) {
+      const Eigen::Vector3d x = position(P, *clash);
       throw InputError(
           "", "grip.fraction",
           fmt::format("the grip of '{}' would take in points of '{}' (one at [{:.4g}, {:.4g}, "
-                      "{:.4g}] um lies among the gripped points): grip a smaller part of the "
-                      "body (coldspray pull-off --grip)",
-                      grip.body, s.bodies[P.body[i]].name, x[0] * 1e6, x[1] * 1e6, x[2] * 1e6));
-  }
+                      "{:.4g}] um lies among the gripped points, even within the body's initial "
+                      "radius of its axis): grip a smaller part of the body (coldspray pull-off "
+                      "--grip)",
+                      grip.body, s.bodies[P.body[*clash]].name, x[0] * 1e6, x[1] * 1e6,
+                      x[2] * 1e6));
+    }
   std::fill(s.gripped.begin(), s.gripped.end(), 0);
   const Eigen::Vector3d v = grip_velocity_at(s, s.time);
-  for (std::size_t i = body->begin; i < body->end; ++i)
-    if (along(i) >= from) {
+  for (std::size_t i = body.begin; i < body.end; ++i)
+    if (whole ? upper(i) : core(i)) {
       s.gripped[i] = 1;
       for (int d = 0; d < 3; ++d) P.velocity[d][i] = v[d];
     }

@@ -22,6 +22,8 @@ void add_sweep(CLI::App& app) {
     int jobs = 1;
     int threads_per_job = 0;
     bool quiet = false;
+    bool pull_off = false;
+    double grip = 0.5;
   };
   auto opt = std::make_shared<Options>();
   auto* sub = app.add_subcommand("sweep", "Run a case over combinations of varied keys");
@@ -35,6 +37,12 @@ void add_sweep(CLI::App& app) {
   sub->add_option("--threads-per-job", opt->threads_per_job,
                   "OpenMP threads per case (default: the cores shared among the jobs)")
       ->check(machine_threads());
+  sub->add_flag("--pull-off", opt->pull_off,
+                "Then pull each finished case off (coldspray pull-off's defaults) into its "
+                "folder's pull-off/, with pull_off.* columns in sweep.csv");
+  sub->add_option("--grip", opt->grip, "With --pull-off: the share of the body that is gripped")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt] {
     std::vector<case_file::Override> base;
@@ -51,6 +59,11 @@ void add_sweep(CLI::App& app) {
     options.progress = !opt->quiet;
     options.rank = mpi.rank();
     options.ranks = mpi.size();
+    if (opt->pull_off) {
+      studies::PullOffOptions pull;
+      pull.fraction = opt->grip;
+      options.pull_off = pull;
+    }
     const studies::SweepCounts n = studies::run_sweep(opt->case_path, base, vary, options);
     mpi.barrier();
     if (mpi.rank() == 0)

@@ -64,14 +64,45 @@ constexpr const char* kBodyColumns[] = {"cor",
                                         "crater_depth",
                                         "flattening_ratio"};
 constexpr const char* kVerdictColumns[] = {"outcome", "separation_speed", "margin"};
+// A pull-off's (docs/pull-off.md), from its summary.json.
+constexpr const char* kPullOffColumns[] = {
+    "peak_force",      "work_of_separation", "bonded_area", "projected_area",
+    "strength_bonded", "strength_projected", "separated"};
+
+const char* const kPullOffFolder = "pull-off";
+
+bool pulled_off(const fs::path& folder) {
+  return fs::exists(folder / kPullOffFolder / "summary.json");
+}
+
+// Pulls one finished case off into its pull-off/ folder (cleared first: an interrupted pull
+// starts over); a failure is written to pull-off-error.txt and the sweep goes on.
+void pull_off_case(const fs::path& folder, PullOffOptions o) {
+  o.impact = folder;
+  o.out = folder / kPullOffFolder;
+  o.progress = false;
+  fs::remove_all(o.out);
+  fs::remove(folder / "pull-off-error.txt");
+  try {
+    pull_off(o);
+  } catch (const std::exception& e) {
+    io::write_atomically(folder / "pull-off-error.txt",
+                         [&](std::ostream& out) { out << e.what() << "\n"; });
+  }
+}
 
 }  // namespace
 
 void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary,
                      const std::vector<SweepCase>& cases) {
-  std::vector<nlohmann::json> summaries;
+  std::vector<nlohmann::json> summaries, pulls;
   std::vector<std::string> bodies;
+  bool any_pulled = false;
   for (const SweepCase& sc : cases) {
+    const bool pulled = pulled_off(out_dir / sc.folder);
+    any_pulled |= pulled;
+    pulls.push_back(pulled ? read_summary(out_dir / sc.folder / kPullOffFolder)
+                           : nlohmann::json::object());
     summaries.push_back(case_finished(out_dir / sc.folder) ? read_summary(out_dir / sc.folder)
                                                            : nlohmann::json());
     const auto& s = summaries.back();
@@ -86,6 +117,8 @@ void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary
       for (const char* q : kBodyColumns) out << "," << csv_field(b + "." + q);
       for (const char* q : kVerdictColumns) out << "," << csv_field(b + "." + q);
     }
+    if (any_pulled)
+      for (const char* q : kPullOffColumns) out << "," << csv_field(std::string("pull_off.") + q);
     out << "\n";
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const nlohmann::json& s = summaries[i];
@@ -108,6 +141,9 @@ void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary
         for (const char* q : kVerdictColumns)
           out << "," << value(verdict.value(q, nlohmann::json()));
       }
+      if (any_pulled)
+        for (const char* q : kPullOffColumns)
+          out << "," << value(pulls[i].value(q, nlohmann::json()));
       out << "\n";
     }
   });
@@ -156,6 +192,18 @@ SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file:
     progress();
   });
   if (options.progress && !pending.empty()) std::cerr << "\n";
+  if (options.pull_off) {
+    std::vector<fs::path> to_pull;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      if (static_cast<int>(i % options.ranks) == options.rank && case_finished(folders[i]) &&
+          !pulled_off(folders[i]))
+        to_pull.push_back(folders[i]);
+    run_parallel(to_pull.size(), options.jobs, options.threads_per_job, [&](std::size_t k) {
+      pull_off_case(to_pull[k], *options.pull_off);
+      std::lock_guard<std::mutex> lock(report);
+      if (options.rank == 0) write_sweep_csv(options.out_dir, vary, cases);
+    });
+  }
   if (options.rank == 0) write_sweep_csv(options.out_dir, vary, cases);
   counts.ran = finished.load();
   counts.failed = failed.load();

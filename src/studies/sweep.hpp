@@ -5,11 +5,13 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "case/load.hpp"
 #include "studies/case_runner.hpp"
+#include "studies/pull_off.hpp"
 #include "studies/variation.hpp"
 
 namespace coldspray::studies {
@@ -21,6 +23,9 @@ struct SweepOptions {
   bool progress = true;     // a progress line on stderr
   int rank = 0;             // this process among `ranks` (MPI): it runs cases i % ranks == rank
   int ranks = 1;
+  // With a value, each finished case is then pulled off (studies/pull_off.hpp) into its folder's
+  // pull-off/ with these options (its impact and out set per case).
+  std::optional<PullOffOptions> pull_off;
 };
 
 struct SweepCounts {
@@ -40,11 +45,14 @@ std::vector<SweepCase> sweep_cases(const std::vector<Variation>& vary);
 
 // Runs the cases of this rank not yet finished; writes DIR/sweep.csv (rank 0) after each case
 // and at the end, from the summaries on disk. A failing case is recorded and the sweep goes on.
+// With options.pull_off, then pulls off every finished case of this rank without a pull-off
+// summary yet; a failing pull-off leaves its message in the case's pull-off-error.txt.
 SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file::Override>& base,
                       const std::vector<Variation>& vary, const SweepOptions& options);
 
 // sweep.csv from the case folders on disk: case, status, the varied keys' values, the run's
-// totals and each body's impact measures.
+// totals and each body's impact measures; where cases were pulled off, their pull-off's
+// results (pull_off.*).
 void write_sweep_csv(const std::filesystem::path& out_dir, const std::vector<Variation>& vary,
                      const std::vector<SweepCase>& cases);
 

@@ -64,6 +64,33 @@ TEST(Cli, SweepRecordsAFailingCaseAndResumes) {
   EXPECT_NE(after.find("case_0002,\"fault: body 'block'"), std::string::npos) << after;
 }
 
+// --pull-off pulls each finished case off into its pull-off/ and adds its results to the table;
+// a case that cannot be pulled off (here: run without bonding) leaves the reason in
+// pull-off-error.txt, and the sweep goes on; run again, the pulled cases are not pulled again.
+TEST(Cli, SweepPullsOffItsCases) {
+  const std::string dir = make_temp_dir();
+  const std::string sweep = "sweep '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                            "/examples/verification/bonding-impact.yaml' --out sw --quiet "
+                            "--vary bonding.model=none,energy --set solver.end_time=0.3ns "
+                            "--pull-off";
+  const auto first = run_coldspray(sweep, dir);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const fs::path sw = fs::path(dir) / "sw";
+  EXPECT_NE(read_text(sw / "case_0001" / "pull-off-error.txt").find("was run without bonding"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(sw / "case_0002" / "pull-off" / "summary.json"));
+  const std::string table = read_text(sw / "sweep.csv");
+  EXPECT_NE(table.find(",pull_off.peak_force,pull_off.work_of_separation,pull_off.bonded_area,"
+                       "pull_off.projected_area,pull_off.strength_bonded,"
+                       "pull_off.strength_projected,pull_off.separated\n"),
+            std::string::npos)
+      << table;
+  const auto stamp = fs::last_write_time(sw / "case_0002" / "pull-off" / "summary.json");
+  const auto again = run_coldspray(sweep, dir);
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(fs::last_write_time(sw / "case_0002" / "pull-off" / "summary.json"), stamp);
+}
+
 // Under mpirun the cases are shared among the ranks (rank r runs cases i % ranks == r) and rank 0
 // writes the table. Skipped where OpenMPI's launcher is not installed.
 TEST(Cli, SweepSpreadsCasesOverMpiRanks) {

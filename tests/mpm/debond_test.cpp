@@ -200,14 +200,26 @@ TEST(Debonding, AStrengthNothingReachesLeavesTheRunAsWithoutTheLaw) {
 TEST(Grip, RefusesToTakeInAnotherBodysPoints) {
   const case_file::Case c = discs("3d");
   State s = build_state(c);
-  const case_file::Grip grip{"upper", 1.0, {0.0, 0.0, 1.0}, case_file::Vec3::Zero(), 0.0};
+  const case_file::Grip grip{"upper", 0.5, {0.0, 0.0, 1.0}, case_file::Vec3::Zero(), 0.0};
   bodies::prepare_grip(s, grip);
-  bodies::take_grip(s, grip);  // the discs are apart: fine
+  bodies::take_grip(s, grip);  // the discs are apart: the whole upper disc
   std::size_t gripped = 0;
   for (const auto g : s.gripped) gripped += g;
-  EXPECT_EQ(gripped, s.bodies[0].end - s.bodies[0].begin);
-  // A point of the lower disc among the upper one's: the grip would drag it along.
-  s.points.position[2][s.bodies[1].begin] = 0.75e-6;
+  EXPECT_EQ(gripped, (s.bodies[0].end - s.bodies[0].begin) / 2);  // 6 layers: the upper 3
+  // An upper point reaching out beyond the disc's radius, as a splat's jetted rim, with a lower
+  // point under it (a crater's lip) in the box of the upper half: only the core within the
+  // disc's initial radius of its axis is gripped, without the rim point.
+  Points& P = s.points;
+  const std::size_t rim = s.bodies[0].end - 1, lip = s.bodies[1].begin;
+  P.position[0][rim] = 5e-6, P.position[1][rim] = 0.0;
+  P.position[0][lip] = 4e-6, P.position[1][lip] = 0.0, P.position[2][lip] = 1e-6;
+  bodies::take_grip(s, grip);
+  EXPECT_EQ(s.gripped[rim], 0);
+  gripped = 0;
+  for (const auto g : s.gripped) gripped += g;
+  EXPECT_EQ(gripped, (s.bodies[0].end - s.bodies[0].begin) / 2 - 1);
+  // A point of the lower disc among the upper one's core: the grip would drag it along.
+  P.position[0][lip] = 0.0;
   try {
     bodies::take_grip(s, grip);
     FAIL() << "took the grip";

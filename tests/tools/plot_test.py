@@ -397,6 +397,38 @@ class PlotToolTest(unittest.TestCase):
         self.assert_failed_without_png(self.run_tool("pull-off", folder, "--labels", "a,b",
                                                      "--out", wrong), wrong, "--labels")
 
+    def test_bond_strength_draws_strength_against_speed_and_a_radial_profile(self):
+        folder = self.out("bond-strength")
+        for case, strength in (("case_0001", 80e6), ("case_0002", 120e6)):
+            os.makedirs(os.path.join(folder, case, "pull-off"))
+            with open(os.path.join(folder, case, "pull-off", "interface.csv"), "w") as f:
+                f.write("x,y,z,radius,area,bond,damage,strength,critical_opening\n"
+                        f"1e-6,0,0,1e-6,1e-12,0.4,0,{strength / 2},1e-6\n"
+                        f"5e-6,0,0,5e-6,1e-12,2.0,0.1,{strength},1e-6\n")
+        with open(os.path.join(folder, "sweep.csv"), "w") as f:
+            f.write("case,status,bodies.particle.velocity,pull_off.strength_bonded,"
+                    "pull_off.strength_projected\n"
+                    'case_0001,ok,"[0,0,-900 m/s]",80e6,30e6\n'
+                    'case_0002,ok,"[0,0,-800 m/s]",120e6,50e6\n'
+                    'case_0003,failed,"[0,0,-1000 m/s]",nan,nan\n')
+        drawn = []  # what the tool draws: (x, y) of the lines, then the scatter's
+        axes = self.tool.plt.Axes
+        plot, scatter = axes.plot, axes.scatter
+        axes.plot = lambda ax, x, y, *a, **k: drawn.append((list(x), list(y)))
+        axes.scatter = lambda ax, x, y, *a, **k: drawn.append((list(x), list(y)))
+        try:
+            self.tool.command_bond_strength(self.tool.build_parser().parse_args(
+                ["bond-strength", folder, "--out", self.out("bond-strength.png")]))
+        finally:
+            axes.plot, axes.scatter = plot, scatter
+        # Sorted by speed, in MPa; the profile of the strongest case (case_0002), in um and MPa.
+        self.assertEqual(drawn, [([800.0, 900.0], [120.0, 80.0]), ([800.0, 900.0], [50.0, 30.0]),
+                                 ([1.0, 5.0], [60.0, 120.0])])
+        missing = self.out("bond-strength-missing.png")
+        self.assert_failed_without_png(self.run_tool("bond-strength", folder, "--key",
+                                                     "bodies.other.velocity", "--out", missing),
+                                       missing, "bodies.other.velocity")
+
     def test_calibration_draws_verdicts_or_tolerances(self):
         for by in ("verdict", "cor-pbcp"):
             folder = write_calibration(self.out("calibration-" + by), by)
