@@ -145,7 +145,7 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // the pair is bonded (a bond forms there, nodal D_bond of eq 4.7 >= 1, or one kept on the points
 // holds) the correction is applied in full, normal and tangential, approaching or not: the bond
 // force; with a debonding law, only up to the traction the bond's points can carry there, the
-// rest opening the bond (contact.damage_increment). Each correction changes the two bodies' momenta
+// rest opening the bond (contact.opened_damage). Each correction changes the two bodies' momenta
 // by equal and opposite amounts, and their forces by the same over dt; `impulse`
 // (bodies::Bodies::contact_impulse) sums them per ordered body pair.
 void resolve_contact(ContactNodes& contact, const ContactRule& rule, double dt, int bodies,
@@ -178,8 +178,8 @@ inline double nodal_bond(const ContactNodes& contact, std::int32_t slot, int e1,
 inline bool bond_forms(double nodal_bond_value) { return nodal_bond_value >= 1.0; }
 
 // Whether the bond kept on the points holds at a node: bonded points of both bodies reach it. A
-// point lets go of its bond when its damage under the debonding law reaches 1 (mark_touching_points
-// in mpm/phases.hpp); without one, a bond, once formed, always holds.
+// point lets go of its bond when its damage under the debonding law reaches 1 (damage_bond in
+// mpm/phases.hpp); without one, a bond, once formed, always holds.
 inline bool bond_holds(std::uint8_t bonded_sides) {
   return bonded_sides == (ContactNodes::kLowerSide | ContactNodes::kHigherSide);
 }
