@@ -118,6 +118,7 @@ struct FileEntry {
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   double end_time = 80e-9;
   std::optional<double> floor;
+  case_file::Debond debond;
   case_file::ImpactMetrics metrics;
   std::vector<SizeEntry> sizes;
   ParametersEntry parameters;
@@ -132,6 +133,7 @@ void fields(IO& io, FileEntry& f) {
   io.scalar("geometry", f.geometry, case_file::kGeometryNames, kOptional);
   io.quantity("end_time", f.end_time, units::kTime, kOptional, case_file::kPositive);
   io.quantity("floor", f.floor, units::kDimensionless, kOptional, case_file::kFraction);
+  io.section("debond", f.debond, kOptional);
   io.section("metrics", f.metrics, kOptional);
   io.list("sizes", f.sizes, kRequired);
   io.section("parameters", f.parameters, kRequired);
@@ -205,6 +207,7 @@ CalibrationFile read_calibration_file(const std::string& path) {
   c.geometry = f.geometry;
   c.end_time = f.end_time;
   c.floor = f.floor;
+  c.debond = f.debond;
   c.metrics = f.metrics;
   c.parameters_where = doc.where(parameters_path);
   c.material_where = doc.where(std::array<std::string, 1>{"material"});
@@ -336,6 +339,7 @@ case_file::Case calibration_case(const CalibrationFile& file, const studies::Cal
   }
   case_file::Case c = case_file::load_case_text(file.path, g.yaml, g.origins);
   c.metrics = file.metrics;  // checked by the case schema when the calibration file was read
+  c.bonding.debond = file.debond;
   return c;
 }
 

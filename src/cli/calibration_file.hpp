@@ -23,6 +23,7 @@ struct CalibrationFile {
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   double end_time = 80e-9;
   std::optional<double> floor;
+  case_file::Debond debond;          // the cases' bonding.debond (the debonding law)
   case_file::ImpactMetrics metrics;  // the cases' metrics section: the verdict's window, ...
   studies::CalibrationPlan plan;
   // Where values were given, "FILE:LINE:COLUMN", so that a problem found in a generated case

@@ -162,6 +162,26 @@ TEST(CliStudies, EveryExampleCalibrationMakesValidCases) {
   EXPECT_GE(files, 2);
 }
 
+// A calibration file's `debond` section is its cases' bonding.debond: the calibration can be run
+// with the debonding law on (docs/studies.md); unset, the law stays off.
+TEST(CliStudies, TheCalibrationFilesDebondReachesItsCases) {
+  const std::string dir = make_temp_dir();
+  std::string text = [] {
+    std::ifstream in(kCalibration);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  }();
+  const CalibrationFile off = read_calibration_file(kCalibration);
+  const auto runs = studies::calibration_runs(off.plan, "out");
+  EXPECT_EQ(calibration_case(off, runs.front()).bonding.debond.law, case_file::DebondLaw::None);
+  text.replace(text.find("end_time: 3 ns"), 14,
+               "end_time: 3 ns\ndebond: {law: cohesive, strength: 50 MPa}");
+  std::ofstream(fs::path(dir) / "calib.yaml") << text;
+  const CalibrationFile on = read_calibration_file((fs::path(dir) / "calib.yaml").string());
+  const case_file::Case c = calibration_case(on, runs.front());
+  EXPECT_EQ(c.bonding.debond.law, case_file::DebondLaw::Cohesive);
+  EXPECT_EQ(c.bonding.debond.strength, 50e6);
+}
+
 struct BadFile {
   const char* name;
   std::string from, to;  // a text edit of the tiny file
