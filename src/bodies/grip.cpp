@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "bodies/body_axis.hpp"
 #include "core/error.hpp"
 
 namespace coldspray::bodies {
@@ -48,21 +49,6 @@ std::optional<std::size_t> other_point_in_box(const Bodies& s, const BodyRange& 
   return std::nullopt;
 }
 
-// The body's axis along `side`: a point on it, its centroid, or on the planes it was cut at (r-z:
-// r = 0).
-Eigen::Vector3d axis_point(const Points& P, const BodyRange& body) {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  double mass = 0.0;
-  for (std::size_t i = body.begin; i < body.end; ++i) {
-    centroid += P.mass[i] * position(P, i);
-    mass += P.mass[i];
-  }
-  centroid /= mass;
-  for (int d = 0; d < 2; ++d)
-    if (body.mirror_plane[d]) centroid[d] = *body.mirror_plane[d];
-  return centroid;
-}
-
 }  // namespace
 
 void take_grip(Bodies& s, const case_file::Grip& grip) {
@@ -82,7 +68,7 @@ void take_grip(Bodies& s, const case_file::Grip& grip) {
   // Where the upper part's box takes in another body's points (a splat whose jetted rim folds up
   // over the crater's lip), only its core: the points within the body's initial radius of its
   // axis.
-  const Eigen::Vector3d axis = axis_point(P, body);
+  const Eigen::Vector3d axis = axis_point(P, body);  // (bodies/body_axis.hpp)
   auto core = [&](std::size_t i) {
     const Eigen::Vector3d r = position(P, i) - axis;
     return upper(i) && (r - r.dot(side) * side).norm() <= 0.5 * body.initial_diameter;

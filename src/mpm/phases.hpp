@@ -139,14 +139,18 @@ void map_bodies_to_contact_nodes(State& s) {
 }
 
 // A point of entry e, bonded to body `partner`, covers the node at `slot`: its side of the pair
-// with the partner's entry is bonded there (ContactNodes::pair_bonded_sides). Returns the pair,
-// or -1 where the partner has no entry.
-inline std::ptrdiff_t mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int partner) {
+// with the partner's entry is bonded there (ContactNodes::pair_bonded_sides). Returns the pair
+// (-1 where the partner has no entry) and whether e is its lower entry.
+struct BondedSide {
+  std::ptrdiff_t pair = -1;
+  bool lower = false;
+};
+inline BondedSide mark_bonded_side(ContactNodes& cn, std::int32_t slot, int e, int partner) {
   const int o = cn.find(slot, partner);
-  if (o < 0 || o == e) return -1;
+  if (o < 0 || o == e) return {};
   const std::size_t k = ContactNodes::pair(slot, std::min(e, o), std::max(e, o));
   cn.pair_bonded_sides[k] |= e < o ? ContactNodes::kLowerSide : ContactNodes::kHigherSide;
-  return static_cast<std::ptrdiff_t>(k);
+  return {static_cast<std::ptrdiff_t>(k), e < o};
 }
 
 // A bonded point's share, weight w = N_I(x_p), of the debonding law's sums at pair k
@@ -194,11 +198,9 @@ void gather_contact_points(State& s) {
         cn.surface_weight[f] += w;
         if (shadowing) shadows.add_to_sums(p, f, w);
         if (P.bonded_to[p] != 0) {
-          const int partner = P.bonded_to[p] - 1;
-          const std::ptrdiff_t k = mark_bonded_side(cn, slot, e, partner);
-          if (k >= 0 && debond.enabled)
-            add_to_bond_sums(cn, debond, P, p, static_cast<std::size_t>(k),
-                             e < cn.find(slot, partner), w);
+          const BondedSide side = mark_bonded_side(cn, slot, e, P.bonded_to[p] - 1);
+          if (side.pair >= 0 && debond.enabled)
+            add_to_bond_sums(cn, debond, P, p, static_cast<std::size_t>(side.pair), side.lower, w);
         }
       }
       if (!gap) return;

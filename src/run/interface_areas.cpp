@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bodies/body_axis.hpp"
 #include "bodies/point_area.hpp"
 #include "bonding/cohesive_law.hpp"
 #include "metrics/impact_metrics.hpp"
@@ -14,28 +15,20 @@ namespace coldspray::run {
 namespace {
 
 // The body's bonded points with the strength the debonding law gives each
-// (bonding/cohesive_law.hpp), radii from the axis through its centroid (r = x in r-z; on the
-// symmetry planes a cut body's axis lies on).
+// (bonding/cohesive_law.hpp), radii from its impact axis (bodies/body_axis.hpp; r = x in r-z).
 std::vector<InterfacePoint> bonded_points(const case_file::Case& c, const bodies::Bodies& s,
                                           std::size_t body) {
   const bonding::CohesiveLaw law = bonding::CohesiveLaw::from_case(c.bonding);
   const bodies::Points& P = s.points;
   const bodies::BodyRange& r = s.bodies[body];
   const bool axi = s.geometry == case_file::Geometry::Axisymmetric;
-  double axis[2] = {0.0, 0.0}, mass = 0.0;
-  for (std::size_t p = r.begin; p < r.end; ++p) {
-    mass += P.mass[p];
-    for (int d = 0; d < 2; ++d) axis[d] += P.mass[p] * P.position[d][p];
-  }
-  for (int d = 0; d < 2; ++d)
-    axis[d] = axi ? 0.0 : r.mirror_plane[d] ? *r.mirror_plane[d] : axis[d] / mass;
+  const Eigen::Vector3d axis = bodies::axis_point(P, r);
   std::vector<InterfacePoint> out;
   for (std::size_t p = r.begin; p < r.end; ++p) {
     if (P.bonded_to[p] == 0) continue;
     InterfacePoint q;
     for (int d = 0; d < 3; ++d) q.position[d] = P.position[d][p];
-    q.radius =
-        axi ? P.position[0][p] : std::hypot(q.position[0] - axis[0], q.position[1] - axis[1]);
+    q.radius = std::hypot(q.position[0] - axis[0], q.position[1] - axis[1]);
     q.area = bodies::point_area(P, p, axi);
     q.bond = P.bond[p];
     q.damage = P.bond_damage[p];
