@@ -80,8 +80,7 @@ bool holds_bonds(const case_file::Case& c) {
 // The default travel: for peridynamics three spacings of the splat, beyond the reach of either
 // adhesive law; for the MPM, twice the opening its bonds let go at, the debonding law's delta_c
 // (the mean of the bonded points that carry a traction) but at most two cells, as the grid sees
-// an opening only while both bodies share nodes, plus two cells; two cells for bonds that never
-// let go.
+// an opening only while both bodies share nodes, plus two cells.
 double default_distance(const case_file::Case& c, std::size_t body,
                         const run::InterfaceAreas& areas) {
   if (c.solver.method != case_file::Method::Mpm) return 3.0 * c.bodies[body].spacing;
@@ -153,17 +152,27 @@ void write_results(const PullOffOptions& o, const PullOffResult& r, const std::s
                        [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
+// The MPM's bonds let go under the debonding law during the pull even where the impact ran
+// without it (its default, bonds that hold for good: the shipped calibration's model decides
+// the verdict, the law the strength; docs/pull-off.md). The impact's own law and its
+// parameters, where it set them, carry over.
+void debond_during_pull(case_file::Case& c) {
+  if (c.solver.method == case_file::Method::Mpm && c.bonding.model != case_file::BondingModel::None)
+    c.bonding.debond.law = case_file::DebondLaw::Cohesive;
+}
+
 }  // namespace
 
 PullOffResult pull_off(const PullOffOptions& o) {
   const std::filesystem::path checkpoint = run::find_checkpoint(o.impact);
   const case_file::Case impact = run::checkpoint_case(checkpoint);
   case_file::Case c = impact;
+  debond_during_pull(c);
   if (!(o.speed > 0.0)) throw InputError("--speed", "", "must be positive");
   if (!(o.fraction > 0.0 && o.fraction <= 1.0)) throw InputError("--grip", "", "must be in (0, 1]");
   const std::size_t body = gripped_body(c, o);
   PullOffResult r;
-  const run::InterfaceAreas areas = run::interface_areas(impact, checkpoint, body);
+  const run::InterfaceAreas areas = run::interface_areas(c, checkpoint, body);
   r.bonded_area = areas.bonded;
   r.projected_area = areas.projected;
   const Eigen::Vector3d direction = pull_direction(c, body, areas, o);

@@ -114,5 +114,25 @@ TEST(PullOff, RefusesARunWithoutBonding) {
   EXPECT_FALSE(fs::exists(dir / "mpm-pull-off"));
 }
 
+// An MPM impact run without the debonding law (its default) is pulled off with the law on: the
+// splat lets go (without it the bonds would hold for good and the force would not fall back),
+// and interface.csv lists the bonded points' strengths.
+TEST(PullOff, PullsWithTheDebondingLawAnImpactRunWithoutIt) {
+  const fs::path dir = make_temp_dir("pull-off");
+  const auto mpm =
+      run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                        "/examples/verification/bonding-impact.yaml' --out mpm --quiet --set "
+                        "solver.end_time=2ns --set bonding.critical_energy=1J/m^2",
+                    dir.string());
+  ASSERT_EQ(mpm.status, 0) << mpm.output;
+  const auto r = run_coldspray("pull-off mpm --out pulled", dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const nlohmann::json j = read_json(dir / "pulled" / "summary.json");
+  EXPECT_GT(j["bonded_area"].get<double>(), 0.0);
+  EXPECT_GT(j["peak_force"].get<double>(), 0.0);
+  EXPECT_TRUE(j["separated"].get<bool>()) << j.dump(2);
+  EXPECT_TRUE(fs::exists(dir / "pulled" / "interface.csv"));
+}
+
 }  // namespace
 }  // namespace coldspray::testing
