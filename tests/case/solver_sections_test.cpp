@@ -93,6 +93,19 @@ TEST(SolverSections, ContactModelOneParametersAreChecked) {
   EXPECT_EQ(c.contact.cutoff, 2.75);
 }
 
+// The debonding law's strength and fracture energy (issue 26's bad input): not positive, exit 2
+// naming the key.
+TEST(SolverSections, DebondingLawParametersArePositive) {
+  for (const char* strength : {"0 MPa", "-1 MPa"})
+    expect_error("al-14um-810.yaml", {{"bonding.debond.strength", strength}},
+                 "bonding.debond.strength", "must be > 0");
+  expect_error("al-14um-810.yaml", {{"bonding.debond.fracture_energy", "0 J/m^2"}},
+               "bonding.debond.fracture_energy", "must be > 0");
+  const Case c = load_case(example("al-14um-810.yaml"), {{"bonding.debond.law", "cohesive"},
+                                                         {"bonding.debond.strength", "50 MPa"}});
+  EXPECT_EQ(c.bonding.debond.strength, 50e6);
+}
+
 TEST(SolverSections, ContactModelTwoParametersAreChecked) {
   const std::string spheres = "verification/pd-elastic-spheres.yaml";
   expect_error("al-14um-810.yaml", {{"contact.model", "interface-bonds"}}, "contact.model",
