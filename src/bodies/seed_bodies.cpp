@@ -101,7 +101,10 @@ std::vector<SeededBody> seed_bodies(const case_file::Case& c) {
   for (const case_file::Body& b : c.bodies) {
     SeededBody sd;
     sd.spacing = b.spacing;
-    sd.points = geometry::seed(b.shape, geometry::Lattice{Vec3::Zero(), b.spacing, axi});
+    const geometry::Lattice lattice{Vec3::Zero(), b.spacing, axi};
+    sd.points = b.coarsening ? geometry::seed_coarsened(b.shape, lattice, b.coarsening->levels,
+                                                        b.coarsening->fine)
+                             : geometry::seed(b.shape, lattice);
     if (sd.points.position.empty())
       case_file::fail_at(
           c, body_key(b, "spacing"),
@@ -130,6 +133,7 @@ void cut_at_planes(const case_file::Case& c, const std::vector<CutPlane>& planes
       if (!inside) continue;
       kept.position.push_back(x);
       kept.volume.push_back(sd.points.volume[i]);
+      kept.size.push_back(sd.points.size[i]);
       kept.outside.push_back(sd.points.outside[i]);
     }
     if (kept.position.empty())
@@ -174,7 +178,7 @@ void lay_out_bodies(const case_file::Case& c, const std::vector<SeededBody>& see
       }
       P.volume0[p] = seeded[b].points.volume[i];
       P.mass[p] = range.material.density * P.volume0[p];
-      for (int d = 0; d < 3; ++d) P.half_width[d][p] = 0.5 * body.spacing;
+      for (int d = 0; d < 3; ++d) P.half_width[d][p] = 0.5 * seeded[b].points.size[i];
       store_point_state(initial, P, p);
       P.sound_speed[p] = c0;
       P.body[p] = static_cast<std::uint16_t>(b);

@@ -42,6 +42,16 @@ using Shape = std::variant<Sphere, Cylinder, Box>;
 // Faces of a body that absorbing or fixed conditions apply to.
 enum class BodyFace { Bottom, Side, Top };
 
+// Coarser points away from where the body deforms (docs/mpm.md, "Coarsened seeding"): the
+// lattice's cubes of 2, 4, ... 2^levels sites a side inside the body, off its surface and away
+// from the box around `fine`, become one point each. MPM only.
+struct Coarsening {
+  int levels = 1;
+  Shape fine;
+
+  friend bool operator==(const Coarsening&, const Coarsening&) = default;
+};
+
 struct Body {
   std::string name;
   std::string material;  // a key of Case::materials
@@ -54,6 +64,7 @@ struct Body {
   // Zero velocity along the face's normal: z on the bottom and top, x and y on the side (the PD
   // paper's side condition). Peridynamics only; the MPM holds grid faces (grid.faces).
   std::vector<BodyFace> roller;
+  std::optional<Coarsening> coarsening;
 
   friend bool operator==(const Body&, const Body&) = default;
 };

@@ -98,6 +98,12 @@ void fields(IO& io, Box& b) {
 }
 
 template <class IO>
+void fields(IO& io, Coarsening& c) {
+  io.scalar("levels", c.levels, WholeNumber{1}, kOptional);
+  io.variant("fine", c.fine, "type", kShapeTypes, kRequired);
+}
+
+template <class IO>
 void fields(IO& io, Body& b) {
   io.scalar("name", b.name, Text{}, kRequired);
   io.scalar("material", b.material, Text{}, kRequired);
@@ -108,6 +114,7 @@ void fields(IO& io, Body& b) {
   io.scalars("absorbing", b.absorbing, kBodyFaceNames, kOptional);
   io.scalars("fixed", b.fixed, kBodyFaceNames, kOptional);
   io.scalars("roller", b.roller, kBodyFaceNames, kOptional);
+  io.section("coarsening", b.coarsening, kOptional);
 }
 
 template <class IO>

@@ -13,7 +13,8 @@ namespace coldspray::case_file {
 // The lattice sites in the body's shape: its volume / spacing^3 in 3D, times the part of its
 // bounding box that the symmetry planes (peridynamics) or the fixed and roller grid faces (MPM)
 // keep; its r-z half-section (x >= 0) / spacing^2 in axisymmetric geometry. In double: an absurd
-// body gives a huge number, not an overflow.
+// body gives a huge number, not an overflow. A coarsened body (Body::coarsening) has fewer: this
+// counts its uniform lattice, an upper bound.
 double estimated_points(const Case& c, const Body& b);
 
 // The MPM grid's nodes along x, y, z, placed as mpm/setup.cpp places them (grid.min/max, or the

@@ -1,5 +1,6 @@
 #include "case/validate.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -32,10 +33,16 @@ void check_grip_body(const Document& doc, const Case& c) {
 }
 
 void check_spacing(const Document& doc, const Grid& grid, const Body& b) {
-  if (b.spacing <= grid.cell_size) return;
-  fail_at(doc, {"bodies", b.name, "spacing"},
-          "must not exceed grid.cell_size (" + shortest_text(b.spacing) + " m > " +
-              shortest_text(grid.cell_size) + " m)");
+  if (b.spacing > grid.cell_size)
+    fail_at(doc, {"bodies", b.name, "spacing"},
+            "must not exceed grid.cell_size (" + shortest_text(b.spacing) + " m > " +
+                shortest_text(grid.cell_size) + " m)");
+  // The coarsest points too: a point larger than a cell would skip nodes (GIMP's support).
+  if (b.coarsening && std::ldexp(b.spacing, b.coarsening->levels) > grid.cell_size * (1 + 1e-12))
+    fail_at(doc, {"bodies", b.name, "coarsening", "levels"},
+            "makes points of " + shortest_text(std::ldexp(b.spacing, b.coarsening->levels)) +
+                " m, larger than grid.cell_size (" + shortest_text(grid.cell_size) +
+                " m): at most spacing x 2^levels = cell_size");
 }
 
 // The MPM needs its grid; PD runs in 3D (its families and contact are three-dimensional).
@@ -67,6 +74,10 @@ void check_solver_sections(const Document& doc, const Case& c) {
       if (c.bonding.model != BondingModel::None)
         fail_at(doc, {"bonding", "model"},
                 "must be none with solver.method peridynamics (the direct bonding model is MPM's)");
+      for (const Body& b : c.bodies)
+        if (b.coarsening)
+          fail_at(doc, {"bodies", b.name, "coarsening"},
+                  "is MPM only: peridynamic families need one spacing");
       return;
   }
 }

@@ -57,9 +57,12 @@ void print_case_summary(const case_file::Case& c, std::ostream& out) {
                      axisymmetric ? "axisymmetric" : "3D", c.bodies.size(),
                      c.solver.end_time * 1e9);
   for (const auto& b : c.bodies) {
-    out << fmt::format("  body '{}': {}, material {}, spacing {:.4g} {}, ~{:.3g} points\n", b.name,
-                       describe(b.shape, u), b.material, b.spacing / u.metres, u.symbol,
-                       case_file::estimated_points(c, b));
+    // A coarsened body has fewer: the estimate counts the uniform lattice.
+    out << fmt::format(
+        "  body '{}': {}, material {}, spacing {:.4g} {}, {}~{:.3g} points{}\n", b.name,
+        describe(b.shape, u), b.material, b.spacing / u.metres, u.symbol,
+        b.coarsening ? "at most " : "", case_file::estimated_points(c, b),
+        b.coarsening ? fmt::format(" (coarsened, {} levels)", b.coarsening->levels) : "");
   }
   if (c.solver.method == case_file::Method::Peridynamics)
     out << fmt::format("  peridynamics, horizon {:.4g} x spacing\n",

@@ -56,6 +56,7 @@ struct ImpactSpec {
   std::optional<double> floor;
   double end_time = 80e-9;  // s: the thesis reads its results at 80 ns (§5.2.2)
   std::string shape_function = "gimp";
+  int coarsening = 0;   // MPM: bodies.substrate.coarsening.levels; 0: a uniform substrate
   std::string command;  // the command line, echoed in the header comment
 };
 

@@ -71,6 +71,11 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
   sub.add_option("--shape-function", o.shape_function, "Grid shape functions")
       ->check(CLI::IsMember({"gimp", "linear"}))
       ->capture_default_str();
+  sub.add_option("--coarsening", o.coarsening,
+                 "MPM: coarser substrate points away from the impact, LEVELS doublings of the "
+                 "spacing, at most up to the cell (docs/impact.md); 0: uniform")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
 }
 
 std::string calibration_warning(const ImpactCaseOptions& o) {
@@ -160,6 +165,9 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
   spec.speed = speed;
   spec.symmetry = o.symmetry == "none" ? Symmetry::None : Symmetry::Quarter;
   if (o.solver == "peridynamics") {
+    if (o.coarsening != 0)
+      throw InputError("--coarsening", "",
+                       "is the MPM's option: peridynamic families need one spacing");
     peridynamics_spec(o, spec);
   } else {
     if (spec.material.empty())
@@ -189,6 +197,7 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
   spec.floor = optional_quantity("--floor", o.floor, units::kDimensionless);
   spec.end_time = parse_option_quantity("--end-time", o.end_time, units::kTime);
   spec.shape_function = o.shape_function;
+  spec.coarsening = o.coarsening;
   spec.command = command;
   return spec;
 }

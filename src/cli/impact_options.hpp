@@ -24,11 +24,13 @@ struct ImpactCaseOptions {
   std::string gc, gc_rate, eps_c, eps_c_rate, floor;
   std::string contact = "repulsive", beta;
   std::string end_time = "80ns", shape_function = "gimp";
+  int coarsening = 0;  // MPM: levels of the substrate's coarsened seeding; 0: uniform
 };
 
 // --solver, --material (required with the MPM), --substrate-material, --grid (MPM), --spacing
 // (PD), --geometry, --symmetry, --contact and --beta (PD), --bonding, --Gc,
-// --Gc-rate, --eps-c, --eps-c-rate, --floor, --end-time, --shape-function; `o` must outlive
+// --Gc-rate, --eps-c, --eps-c-rate, --floor, --end-time, --shape-function, --coarsening; `o` must
+// outlive
 // the parse. `particle_options` is called after the materials, to add the caller's options for
 // the particle's size and speed there (their place in --help and in generated headers).
 void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,

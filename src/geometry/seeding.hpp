@@ -31,7 +31,14 @@ enum OutsideNeighbour : std::uint8_t {
 struct SeededPoints {
   std::vector<Vec3> position;
   std::vector<double> volume;         // m^3 (3D cube, or axisymmetric ring)
+  std::vector<double> size;           // edge of the point's cube (square in r-z), m
   std::vector<std::uint8_t> outside;  // OutsideNeighbour bits; non-zero on the surface
+
+  // Adds the lattice site x of spacing s (SeededPoints::outside from its face neighbours).
+  void add_site(const case_file::Shape& shape, const Vec3& x, double s, bool axisymmetric);
+  // Adds a point standing for the whole cube (square in r-z) of edge b centred at x, inside
+  // the shape and off its surface.
+  void add_block(const Vec3& x, double b, bool axisymmetric);
 };
 
 // Seeds every lattice site inside `shape`. A point is on the surface when one of its face
@@ -39,5 +46,12 @@ struct SeededPoints {
 // inside the shape: the points bonding acts on (thesis §4.1.1, the set S). Which neighbours are
 // outside tells the face (bottom: -z, top: +z, side: the others) for fixed and absorbing faces.
 SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice);
+
+// Seeds the same lattice, but where a cube of 2^l x 2^l (x 2^l) sites, l <= levels, lies inside
+// the shape, off its surface by a spacing, and farther than its own edge from the box around
+// `fine`, one point stands for the cube (docs/mpm.md, "Coarsened seeding"). The points' volumes
+// add up to those of seed()'s, and the surface points are seed()'s.
+SeededPoints seed_coarsened(const case_file::Shape& shape, const Lattice& lattice, int levels,
+                            const case_file::Shape& fine);
 
 }  // namespace coldspray::geometry

@@ -93,6 +93,26 @@ TEST(SolverSections, ContactModelOneParametersAreChecked) {
   EXPECT_EQ(c.contact.cutoff, 2.75);
 }
 
+// Coarsened seeding (docs/mpm.md): its coarsest points no larger than a cell, and MPM only.
+TEST(SolverSections, CoarseningStaysWithinACellAndIsMpmOnly) {
+  const std::string fine = "{type: box, min: [0, 0, -2 um], max: [4 um, 4 um, 0]}";
+  // 0.175 um x 2^3 = 1.4 um > the 0.7 um cell.
+  const InputError e = input_error([&] {
+    load_case(example("al-14um-810.yaml"),
+              {{"bodies.substrate.coarsening", "{levels: 3, fine: " + fine + "}"}});
+  });
+  EXPECT_EQ(e.key(), "bodies.substrate.coarsening.levels");
+  EXPECT_TRUE(contains(e.where(), "--set bodies.substrate.coarsening")) << e.where();
+  EXPECT_TRUE(contains(e.message(), "larger than grid.cell_size")) << e.message();
+  const Case c = load_case(example("al-14um-810.yaml"),
+                           {{"bodies.substrate.coarsening", "{levels: 2, fine: " + fine + "}"}});
+  ASSERT_TRUE(c.bodies[1].coarsening);
+  EXPECT_EQ(c.bodies[1].coarsening->levels, 2);
+  expect_error("verification/pd-elastic-spheres.yaml",
+               {{"bodies.lower.coarsening", "{levels: 1, fine: " + fine + "}"}},
+               "bodies.lower.coarsening", "is MPM only");
+}
+
 // The debonding law's strength and fracture energy (issue 26's bad input): not positive, exit 2
 // naming the key.
 TEST(SolverSections, DebondingLawParametersArePositive) {

@@ -144,6 +144,29 @@ TEST(Impact, ThreeDIsAQuarterModelOnSymmetryPlanes) {
   EXPECT_EQ(whole.grid->faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Free);
 }
 
+// --coarsening L: the substrate's coarsened seeding (docs/mpm.md), fine within 0.65 D of the
+// axis and 0.36 D of its top; too many levels for the cell name the option; PD refuses it.
+TEST(Impact, CoarseningReachesTheSubstrate) {
+  const case_file::Case c = written_case(kCase22 + " --geometry 3d --coarsening 2");
+  ASSERT_TRUE(c.bodies[1].coarsening);
+  EXPECT_FALSE(c.bodies[0].coarsening);
+  EXPECT_EQ(c.bodies[1].coarsening->levels, 2);
+  const auto& fine = std::get<case_file::Cylinder>(c.bodies[1].coarsening->fine);
+  EXPECT_NEAR(fine.radius, 0.65 * 22e-6, 1e-12);
+  EXPECT_NEAR(fine.height, 0.36 * 22e-6, 1e-12);
+  EXPECT_NEAR(fine.base_center.z(), -0.36 * 22e-6, 1e-12);
+  EXPECT_FALSE(written_case(kCase22).bodies[1].coarsening);
+  const auto coarse = run_coldspray(kCase22 + " --coarsening 3");
+  EXPECT_EQ(coarse.status, 2) << coarse.output;
+  EXPECT_NE(coarse.output.find("--coarsening: key 'bodies.substrate.coarsening.levels'"),
+            std::string::npos)
+      << coarse.output;
+  const auto pd = run_coldspray(
+      "impact --solver peridynamics --diameter 10um --velocity 500m/s --coarsening 1");
+  EXPECT_EQ(pd.status, 2) << pd.output;
+  EXPECT_NE(pd.output.find("--coarsening: is the MPM's option"), std::string::npos) << pd.output;
+}
+
 // --solver peridynamics: the PD paper's set-up (its "Simulation Setup"): cu-jc by default, a
 // cylinder of radius and height 4 particle radii, bottom fixed, side restrained, D / 50
 // spacing, a quarter by symmetry planes.

@@ -1,0 +1,105 @@
+// Coarsened seeding (geometry/seeding.hpp, docs/mpm.md "Coarsened seeding"): against seed() on
+// the same lattice, the points tile the same sites once each, keep seed()'s surface points and
+// volumes, and coarsen only away from the fine region.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <tuple>
+
+#include "geometry/seeding.hpp"
+
+namespace coldspray::geometry {
+namespace {
+
+using Site = std::tuple<long, long, long>;
+
+// The lattice index of the site of spacing s at x (sites at (i + 1/2) s; y = 0 in r-z).
+Site site_of(const Vec3& x, double s, bool axi) {
+  return {std::lround(x.x() / s - 0.5), axi ? 0 : std::lround(x.y() / s - 0.5),
+          std::lround(x.z() / s - 0.5)};
+}
+
+// How many times each of seed()'s sites is covered by a coarsened point's cube.
+std::map<Site, int> coverage(const SeededPoints& p, double s, bool axi) {
+  std::map<Site, int> covered;
+  for (std::size_t q = 0; q < p.position.size(); ++q) {
+    const long n = std::lround(p.size[q] / s);
+    const Vec3 first = p.position[q] - 0.5 * (p.size[q] - s) * Vec3(1.0, axi ? 0.0 : 1.0, 1.0);
+    for (long k = 0; k < n; ++k)
+      for (long j = 0; j < (axi ? 1 : n); ++j)
+        for (long i = 0; i < n; ++i) ++covered[site_of(first + s * Vec3(i, j, k), s, axi)];
+  }
+  return covered;
+}
+
+void expect_same_body(const case_file::Shape& shape, double s, bool axi, int levels,
+                      const case_file::Shape& fine) {
+  const Lattice lattice{Vec3::Zero(), s, axi};
+  const SeededPoints uniform = seed(shape, lattice);
+  const SeededPoints coarse = seed_coarsened(shape, lattice, levels, fine);
+  // Fewer points, the same sites each covered once.
+  EXPECT_LT(coarse.position.size(), uniform.position.size() / 2);
+  const auto covered = coverage(coarse, s, axi);
+  ASSERT_EQ(covered.size(), uniform.position.size());
+  for (const Vec3& x : uniform.position) EXPECT_EQ(covered.at(site_of(x, s, axi)), 1);
+  // The same volume (a ring's is linear in r, so a block's is its sites' sum in r-z too).
+  const double v0 = std::accumulate(uniform.volume.begin(), uniform.volume.end(), 0.0);
+  const double v1 = std::accumulate(coarse.volume.begin(), coarse.volume.end(), 0.0);
+  EXPECT_NEAR(v1, v0, 1e-10 * v0);  // summation rounding over ~1e5 terms
+  // The same surface points, with the same flags; every coarse point off the surface, its edge
+  // at most 2^levels spacings, and away from the fine region's box by at least its edge.
+  std::map<Site, std::uint8_t> surface;
+  for (std::size_t q = 0; q < uniform.position.size(); ++q)
+    if (uniform.outside[q]) surface[site_of(uniform.position[q], s, axi)] = uniform.outside[q];
+  std::size_t coarse_surface = 0, coarser = 0;
+  const Bounds box = bounding_box(fine);
+  for (std::size_t q = 0; q < coarse.position.size(); ++q) {
+    if (coarse.size[q] == s) {
+      if (coarse.outside[q]) {
+        ++coarse_surface;
+        EXPECT_EQ(surface.at(site_of(coarse.position[q], s, axi)), coarse.outside[q]);
+      }
+      continue;
+    }
+    ++coarser;
+    EXPECT_EQ(coarse.outside[q], 0);
+    EXPECT_LE(coarse.size[q], std::ldexp(s, levels) * (1 + 1e-12));
+    const double b = coarse.size[q];
+    bool away = false;
+    for (int d = 0; d < 3; ++d) {
+      if (axi && d == 1) continue;
+      const double lo = coarse.position[q][d] - 0.5 * b, hi = coarse.position[q][d] + 0.5 * b;
+      // (within rounding: a cube grown by its edge may just touch the box)
+      away = away || lo - b > box.max[d] - 1e-9 * b || hi + b < box.min[d] + 1e-9 * b;
+    }
+    EXPECT_TRUE(away) << "a point of edge " << b << " at " << coarse.position[q].transpose();
+  }
+  EXPECT_EQ(coarse_surface, surface.size());
+  EXPECT_GT(coarser, 0u);
+}
+
+// The thesis' substrate (30 x 10 um cylinder, Table 5.3) at 0.25 um, fine under a 14 um
+// particle's footprint.
+TEST(CoarsenedSeeding, A3dSubstrateTilesTheSameSitesOnce) {
+  const case_file::Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const case_file::Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
+  expect_same_body(substrate, 0.25e-6, false, 2, fine);
+}
+
+TEST(CoarsenedSeeding, AnRzSubstrateTilesTheSameSitesOnce) {
+  const case_file::Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const case_file::Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
+  expect_same_body(substrate, 0.125e-6, true, 3, fine);
+}
+
+TEST(CoarsenedSeeding, ABoxAndASphereTileTheSameSitesOnce) {
+  const case_file::Box fine{Vec3(-1e-6, -1e-6, -1e-6), Vec3(1e-6, 1e-6, 1e-6)};
+  expect_same_body(case_file::Box{Vec3(-6e-6, -5e-6, -4e-6), Vec3(6e-6, 5e-6, 4e-6)}, 0.25e-6,
+                   false, 2, fine);
+  expect_same_body(case_file::Sphere{Vec3(0.1e-6, 0, 0), 6e-6}, 0.25e-6, false, 3, fine);
+}
+
+}  // namespace
+}  // namespace coldspray::geometry
