@@ -87,6 +87,7 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   const double body_vz = momentum_z / mass;
   double jetted = 0.0, touched = 0.0, bonded = 0.0, bond_sum = 0.0, radius = 0.0;
   std::size_t touched_points = 0;
+  m.bonded_area_with.assign(s.bodies.size(), 0.0);
   for (std::size_t p = r.begin; p < r.end; ++p) {
     const double dx = P.position[0][p] - centroid[0], dy = P.position[1][p] - centroid[1];
     const double radial = std::hypot(dx, dy);
@@ -99,6 +100,8 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
       radius = std::max(radius, radial);
     if (P.surface[p] && P.initial_z[p] > top - 0.75 * r.spacing)
       m.crater_depth = std::max(m.crater_depth, P.initial_z[p] - P.position[2][p]);
+    // As bonded_area (rest_and_bond): every point that keeps a bond.
+    if (P.bonded_to[p] != 0) m.bonded_area_with[P.bonded_to[p] - 1u] += point_area(s, p);
     if (!P.touched[p]) continue;
     ++touched_points;
     bond_sum += P.bond[p];
@@ -114,7 +117,20 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;
   m.pbcp = touched > 0.0 ? 100.0 * bonded / touched : 0.0;
+  const double whole = whole_body_factor(s, r);
+  for (double& area : m.bonded_area_with) area *= whole;
+  m.contacted_mass = whole * touched;
+  m.bonded_mass = whole * bonded;
   return m;
+}
+
+double system_pbcp(const std::vector<ImpactMeasures>& bodies) {
+  double contacted = 0.0, bonded = 0.0;
+  for (const ImpactMeasures& m : bodies) {
+    contacted += m.contacted_mass;
+    bonded += m.bonded_mass;
+  }
+  return contacted > 0.0 ? 100.0 * bonded / contacted : 0.0;
 }
 
 }  // namespace coldspray::metrics

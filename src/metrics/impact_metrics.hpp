@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "bodies/bodies.hpp"
 
@@ -31,10 +32,20 @@ struct ImpactMeasures {
   double flattening_ratio = 0.0;
   double contact_area = 0.0;  // surface area of the points that touched another body, m^2
   double bonded_area = 0.0;   // of those that keep a bond (bodies::Points::bonded_to), m^2
-  bool moving = false;        // started with a z velocity: cor and the verdict apply
+  // bonded_area by the body the bond holds to, indexed by body (0 for the body itself), m^2.
+  std::vector<double> bonded_area_with;
+  // Eq 5.1's masses, of the whole body (symmetry planes counted): with D_bond > 0 and >= 1, kg.
+  // Summed over bodies they give the system's PBCP (system_pbcp).
+  double contacted_mass = 0.0;
+  double bonded_mass = 0.0;
+  bool moving = false;  // started with a z velocity: cor and the verdict apply
 };
 
 ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body);
+
+// The PBCP of eq 5.1 over all the bodies' contacted points, as thesis Table 5.5 reports it for a
+// multi-particle system: 100 sum bonded_mass / sum contacted_mass, %; 0 where nothing touched.
+double system_pbcp(const std::vector<ImpactMeasures>& bodies);
 
 // What the verdict follows of a body, from one pass over its points, as ImpactMeasures counts
 // it: the mass and z momentum of all its points and of those at rest (v_rest = rest_momentum_z /

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 
@@ -39,8 +40,14 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
     return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
   };
   int moving = 0, bonded = 0, undecided = 0;
+  std::vector<metrics::ImpactMeasures> measures;
   for (const auto& b : s.bodies) {
     const metrics::ImpactMeasures& m = b.impact;
+    measures.push_back(m);
+    // Bonded area by partner, for the bodies it holds to (thesis Table 5.5's pairs).
+    nlohmann::ordered_json with = nlohmann::ordered_json::object();
+    for (std::size_t o = 0; o < m.bonded_area_with.size() && o < s.bodies.size(); ++o)
+      if (m.bonded_area_with[o] > 0.0) with[s.bodies[o].name] = m.bonded_area_with[o];
     bodies[b.name] = {{"mass", b.mass},
                       {"velocity", b.velocity},
                       {"centroid", b.centroid},
@@ -59,6 +66,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                       {"flattening_ratio", m.flattening_ratio},
                       {"contact_area", m.contact_area},
                       {"bonded_area", m.bonded_area},
+                      {"bonded_area_with", with},
                       {"departed",
                        {{"points", b.departed.points},
                         {"mass", b.departed.mass},
@@ -89,6 +97,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                  {"moving_bodies", moving},
                  {"bonded_bodies", bonded},
                  {"undecided_bodies", undecided},
+                 {"pbcp", metrics::system_pbcp(measures)},
                  {"extensions", s.extensions}};
   io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }

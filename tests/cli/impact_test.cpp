@@ -2,6 +2,7 @@
 // errors, a short run, and the examples in examples/coldspray/ that were generated with it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -360,6 +361,35 @@ TEST(Impact, AnUndecidedRunIsExtendedAndReadsBonded) {
   EXPECT_NEAR(v["window"].get<double>(), 10e-9, 1e-18);
   EXPECT_NEAR(v["margin"].get<double>(), 2.0 - v["separation_speed"].get<double>(), 1e-12);
   EXPECT_GT(v["margin"].get<double>(), 0.0);
+}
+
+// summary.json's bonded area by partner and the system's PBCP (docs/bonding.md, "Metrics"), on
+// a particle that bonds in part at once (G_c = 20 J/m^2, 2 ns): with two bodies each holds all its
+// bonded area to the other, and the system's PBCP, eq 5.1 over both bodies' contacted points, lies
+// between theirs.
+TEST(Impact, SummaryHasBondedAreaByPartnerAndTheSystemsPbcp) {
+  const std::string dir = make_temp_dir("impact");
+  const auto r = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                                   "/examples/verification/bonding-impact.yaml' --out result "
+                                   "--quiet --set solver.end_time=2ns --set "
+                                   "bonding.critical_energy=20J/m^2",
+                               dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(read_text(fs::path(dir) / "result" / "summary.json"));
+  const auto& particle = j["bodies"]["particle"];
+  const auto& substrate = j["bodies"]["substrate"];
+  ASSERT_GT(particle["bonded_area"].get<double>(), 0.0);
+  EXPECT_EQ(particle["bonded_area_with"].size(), 1u);
+  EXPECT_EQ(particle["bonded_area_with"]["substrate"].get<double>(),
+            particle["bonded_area"].get<double>());
+  EXPECT_EQ(substrate["bonded_area_with"]["particle"].get<double>(),
+            substrate["bonded_area"].get<double>());
+  const double low = std::min(particle["pbcp"].get<double>(), substrate["pbcp"].get<double>());
+  const double high = std::max(particle["pbcp"].get<double>(), substrate["pbcp"].get<double>());
+  const double system = j["system"]["pbcp"].get<double>();
+  EXPECT_LT(low, high);
+  EXPECT_GE(system, low);
+  EXPECT_LE(system, high);
 }
 
 TEST(ImpactExamples, EveryExamplePassesCheck) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "mpm/contact.hpp"
 
@@ -71,6 +72,67 @@ TEST(ImpactMetrics, CountsByHand) {
   EXPECT_NEAR(r.rest_mass, 5e-15, 1e-27);
   EXPECT_NEAR(r.rest_momentum_z, 4e-15, 1e-27);
   EXPECT_NEAR(r.bonded_area, 2e-12, 1e-24);
+}
+
+// Three bodies bonded by hand, as in the thesis' two-particle impacts (Table 5.5): a top
+// particle bonded to the bottom one, the bottom one to both, the substrate to the bottom one.
+// Points of equal mass 1e-15 kg and area 1e-12 m^2.
+bodies::Bodies three_bodies() {
+  bodies::Bodies s;
+  s.geometry = case_file::Geometry::ThreeD;
+  bodies::Points& P = s.points;
+  P.resize(10);
+  const char* names[3] = {"top", "bottom", "substrate"};
+  const std::size_t begin[4] = {0, 3, 7, 10};
+  for (std::size_t b = 0; b < 3; ++b) {
+    bodies::BodyRange body;
+    body.name = names[b];
+    body.begin = begin[b];
+    body.end = begin[b + 1];
+    body.spacing = 1e-6;
+    body.initial_velocity = {0.0, 0.0, b < 2 ? -810.0 : 0.0};
+    body.initial_diameter = 14e-6;
+    s.bodies.push_back(body);
+  }
+  // D_bond and the body each point keeps a bond to (1 + its index; 0: none).
+  const double bond[10] = {1.2, 0.5, 0.0, 2.0, 1.0, 0.3, 0.0, 1.1, 0.2, 0.0};
+  const std::uint16_t bonded_to[10] = {2, 0, 0, 1, 3, 0, 0, 2, 0, 0};
+  for (std::size_t p = 0; p < 10; ++p) {
+    P.mass[p] = 1e-15;
+    P.volume0[p] = 1e-18;
+    P.J[p] = 1.0;
+    P.position[2][p] = static_cast<double>(p) * 1e-6;
+    P.bond[p] = bond[p];
+    P.touched[p] = bond[p] > 0.0;
+    P.bonded_to[p] = bonded_to[p];
+    P.surface[p] = 1;
+  }
+  return s;
+}
+
+TEST(ImpactMetrics, BondedAreaByPartnerAndTheSystemsPbcp) {
+  bodies::Bodies s = three_bodies();
+  std::vector<ImpactMeasures> m;
+  for (std::size_t b = 0; b < 3; ++b) m.push_back(impact_measures(s, b));
+  // Points of volume 1e-18 m^3 stand for (1e-18)^(2/3) = 1e-12 m^2.
+  const double expected[3][3] = {{0.0, 1e-12, 0.0}, {1e-12, 0.0, 1e-12}, {0.0, 1e-12, 0.0}};
+  for (std::size_t b = 0; b < 3; ++b) {
+    ASSERT_EQ(m[b].bonded_area_with.size(), 3u);
+    for (std::size_t o = 0; o < 3; ++o)
+      EXPECT_NEAR(m[b].bonded_area_with[o], expected[b][o], 1e-24) << b << " with " << o;
+  }
+  // Eq 5.1 per body: 1 of 2, 2 of 3 and 1 of 2 contacted points bonded; over the system 4 of 7.
+  EXPECT_NEAR(m[0].pbcp, 50.0, 1e-12);
+  EXPECT_NEAR(m[1].pbcp, 200.0 / 3.0, 1e-12);
+  EXPECT_NEAR(m[2].pbcp, 50.0, 1e-12);
+  EXPECT_NEAR(system_pbcp(m), 400.0 / 7.0, 1e-12);
+  // A body cut at a symmetry plane counts twice its points: the substrate's 1 of 2 become 2 of 4,
+  // so the system has 5 of 9.
+  s.bodies[2].mirror_plane[0] = 0.0;
+  m[2] = impact_measures(s, 2);
+  EXPECT_NEAR(m[2].bonded_area_with[1], 2e-12, 1e-24);
+  EXPECT_NEAR(system_pbcp(m), 500.0 / 9.0, 1e-12);
+  EXPECT_EQ(system_pbcp({}), 0.0);
 }
 
 // Points that left the grid (mpm/departures.hpp) count as jetted; the rest of the measures are
