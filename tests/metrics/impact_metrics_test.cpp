@@ -27,6 +27,13 @@ bodies::Bodies six_points() {
   body.initial_velocity = {0.0, 0.0, -800.0};
   body.initial_diameter = 4e-6;
   s.bodies.push_back(body);
+  // The body its points bond to, with no points of its own here.
+  bodies::BodyRange other;
+  other.name = "substrate";
+  other.begin = 6;
+  other.end = 6;
+  other.spacing = 1e-6;
+  s.bodies.push_back(other);
   const double x[6] = {-1e-6, 1e-6, 0.0, 0.0, 3e-6, -1.5e-6};
   const double vz[6] = {1.0, 2.0, 0.5, 0.5, 10.0, 0.0};
   const double vx[6] = {0.0, 0.0, 0.0, 0.0, 500.0, 0.0};  // point 4 jets outward
@@ -65,6 +72,8 @@ TEST(ImpactMetrics, CountsByHand) {
   // Five touched points of area (1e-18)^(2/3) = 1e-12 m^2; two keep a bond.
   EXPECT_NEAR(m.contact_area, 5e-12, 1e-24);
   EXPECT_NEAR(m.bonded_area, 2e-12, 1e-24);
+  EXPECT_NEAR(m.bonded_area_with[1], 2e-12, 1e-24);  // both to the substrate
+  EXPECT_EQ(m.bonded_area_with[0], 0.0);
   EXPECT_TRUE(m.moving);
   // What the verdict follows, from its own pass: the five slow points' mass and z momentum, and
   // the bonded area.
