@@ -9,6 +9,8 @@ This tool reads them and writes PNG figures:
       cross-sections of the bodies coloured by a point field, one panel per run and time;
   history DIR [DIR2 ...] --columns cor,v_rest --body particle --out history.png
       history.csv columns against time, several runs overlaid;
+  deposit DIR --out deposit.png
+      a deposit's thickness map and section (coldspray deposit);
   info DIR
       what a run folder holds: snapshot times, point fields, history columns.
 
@@ -30,6 +32,7 @@ import numpy as np
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display
+import matplotlib.patches  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 from matplotlib.collections import PolyCollection  # noqa: E402
 
@@ -419,23 +422,31 @@ def make_section(data, case, body_ids, fields, path, reference=None):
     """Cuts the snapshot: selected bodies, the y ~ 0 slab in 3D, mirrored to -r if axisymmetric.
 
     With `reference` (the first snapshot, same points), the 3D slab is the points that were in it
-    there: the same material section at every time, whatever the points' motion across y."""
+    there: the same material section at every time, whatever the points' motion across y.
+    Snapshots with the points' half widths (coarsened bodies' points stand for blocks of several
+    spacings) cut and draw each point by its own domain."""
     if "body" not in data.arrays:
         raise PlotError(f"{path}: no 'body' point array")
     body = data.arrays["body"]
     spacing = np.array(case.spacings)[np.clip(body, 0, len(case.spacings) - 1)]
+    half_width = data.arrays.get("half_width")
     keep = np.isin(body, body_ids)
     if not case.axisymmetric:
         if reference is not None and len(reference) != len(data):
             raise PlotError(f"{path}: --cut material needs the first snapshot's points "
                             f"({len(reference)}), this one has {len(data)}")
-        y = (reference if reference is not None else data).points[:, 1]
-        for b in body_ids:  # each body's slab from its own spacing
-            on_body = body == b
-            keep[on_body] &= slab_mask(y[on_body], case.spacings[b])
+        cut = reference if reference is not None else data
+        y = cut.points[:, 1]
+        if half_width is not None and "half_width" in cut.arrays:
+            # The points whose domain the plane y = 0 crosses (as slab_mask's 0.6 spacing).
+            keep &= np.abs(y) < 1.2 * cut.arrays["half_width"][:, 1]
+        else:
+            for b in body_ids:  # each body's slab from its own spacing
+                on_body = body == b
+                keep[on_body] &= slab_mask(y[on_body], case.spacings[b])
     h, v = data.points[keep, 0], data.points[keep, 2]
     values = {f: field_values(data, f, path)[keep] for f in fields}
-    size = spacing[keep]
+    size = spacing[keep] if half_width is None else 2.0 * half_width[keep, 0]
     if case.axisymmetric:  # the points are (r, z): draw the mirror image at -r too
         h = np.concatenate([h, -h])
         v, size = np.tile(v, 2), np.tile(size, 2)
@@ -916,6 +927,59 @@ def command_bond_strength(options):
     save_figure(fig, options.out, options.dpi)
 
 
+VERDICT_COLOURS = {"bonded": "tab:green", "rebounded": "tab:red", "undecided": "tab:orange",
+                   "none": "tab:gray"}
+
+
+def command_deposit(options):
+    """`coldspray deposit`'s picture: the deposit's thickness over the patch with each particle's
+    footprint at its start (edge colour: its verdict), and an eqps section of the last snapshot
+    through the plane y = --y."""
+    folder = require_dir(options.dir)
+    deposit = read_json(os.path.join(folder, "deposit.json"))
+    case = CaseInfo(os.path.join(folder, "case.resolved.yaml"))
+    entries = read_pvd(os.path.join(folder, "snapshots.pvd"))
+    time, path = entries[-1]
+    data = read_vtu(path)
+    y0 = parse_quantity(options.y, LENGTH_UNITS, "--y")
+    data.points = data.points - np.array([0.0, y0, 0.0])
+    section = make_section(data, case, list(range(len(case.body_names))), ["eqps"], path)
+    patch = np.array(deposit["patch"]) * METRE_TO_UM
+    tmap = deposit["thickness_map"]
+    thickness = np.array(tmap["values"]).reshape(tmap["columns_y"], tmap["columns_x"])
+    fig, (top, side) = plt.subplots(1, 2, layout="constrained",
+                                    figsize=(2 * options.panel_width, options.panel_width * 0.8),
+                                    width_ratios=[1, 1.6])
+    extent = [-patch[0] / 2, patch[0] / 2, -patch[1] / 2, patch[1] / 2]
+    image = top.imshow(thickness * METRE_TO_UM, origin="lower", extent=extent, cmap="viridis")
+    fig.colorbar(image, ax=top, label="deposit top above the substrate's surface (um)",
+                 shrink=0.8)
+    for particle in deposit["particles"]:
+        x, y = (c * METRE_TO_UM for c in particle["centre"][:2])
+        colour = VERDICT_COLOURS.get(particle["verdict"], "tab:gray")
+        top.add_patch(matplotlib.patches.Circle((x, y), 0.5 * particle["diameter"] * METRE_TO_UM,
+                                                fill=False, edgecolor=colour, lw=1.2))
+        top.annotate(particle["name"], (x, y), ha="center", va="center", fontsize="x-small",
+                     color=colour)
+    top.axhline(y0 * METRE_TO_UM, color="w", lw=0.6, ls="--")
+    top.set_xlim(extent[0], extent[1])
+    top.set_ylim(extent[2], extent[3])
+    top.set_xlabel("x (um)")
+    top.set_ylabel("y (um)")
+    top.set_title(f"DE {100 * deposit['deposition_efficiency']:.3g} %, porosity "
+                  f"{100 * deposit['porosity']:.3g} %, mean thickness "
+                  f"{deposit['mean_thickness'] * METRE_TO_UM:.3g} um", fontsize="small")
+    limits = plot_limits([section], None, None)
+    norm = matplotlib.colors.Normalize(0.0, float(np.max(section.values["eqps"], initial=1.0)))
+    mappable = draw_panel(side, section, "eqps", limits, norm, "viridis")
+    fig.colorbar(mappable, ax=side, label=field_label("eqps"), shrink=0.8)
+    side.set_xlabel("x (um)")
+    side.set_ylabel("z (um)")
+    side.set_title(f"section y = {y0 * METRE_TO_UM:g} um at t = {time * SECOND_TO_NS:.4g} ns",
+                   fontsize="small")
+    save_figure(fig, options.out, options.dpi)
+
+
 PARAMETER_LABELS = {"critical_energy": ("$G_c$ (J/m$^2$)", 1.0),
                     "critical_energy_rate": (r"$\dot G_c$ (J/m$^2$/us)", 1e-6),
                     "critical_strain": (r"$\epsilon_c$", 1.0),
@@ -1116,6 +1180,15 @@ def build_parser():
     bond.add_argument("--dpi", type=int, default=150)
     bond.add_argument("--out", required=True, help="PNG file to write")
     bond.set_defaults(run=command_bond_strength)
+
+    deposit = commands.add_parser("deposit", help="a deposit's thickness map and section "
+                                                  "(coldspray deposit)")
+    deposit.add_argument("dir", help="deposit run folder (deposit.json, snapshots)")
+    deposit.add_argument("--y", default="0um", help="the section's plane y = Y (default 0um)")
+    deposit.add_argument("--panel-width", type=float, default=5.0, help="inches per panel")
+    deposit.add_argument("--dpi", type=int, default=150)
+    deposit.add_argument("--out", required=True, help="PNG file to write")
+    deposit.set_defaults(run=command_deposit)
 
     info = commands.add_parser("info", help="list snapshot times, point fields and columns")
     info.add_argument("dir", help="run output folder")

@@ -109,7 +109,7 @@ struct Solver {
   friend bool operator==(const Solver&, const Solver&) = default;
 };
 
-enum class ContactNormal { MaxGradient, Body, HighestId };
+enum class ContactNormal { MaxGradient, Body, HighestId, AverageGradient };
 
 // The force law between points of different bodies in peridynamics (docs/pd.md, "Contact"): the
 // short-range repulsion (its constants under `peridynamics`), the PD paper's contact model 1,

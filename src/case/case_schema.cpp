@@ -13,11 +13,15 @@ void ContactNormalText::parse(std::string_view text, Contact& contact) const {
   } else if (text == "highest-id") {
     contact.normal = ContactNormal::HighestId;
     contact.normal_body.clear();
+  } else if (text == "average-gradient") {
+    contact.normal = ContactNormal::AverageGradient;
+    contact.normal_body.clear();
   } else if (text.starts_with(kBodyPrefix) && text.size() > kBodyPrefix.size()) {
     contact.normal = ContactNormal::Body;
     contact.normal_body = text.substr(kBodyPrefix.size());
   } else {
-    constexpr std::array<std::string_view, 3> kForms{"max-gradient", "highest-id", "body:NAME"};
+    constexpr std::array<std::string_view, 4> kForms{"max-gradient", "average-gradient",
+                                                     "highest-id", "body:NAME"};
     throw BadValue(unknown_word("contact normal", text, kForms));
   }
 }
@@ -28,6 +32,8 @@ std::string ContactNormalText::format(const Contact& contact) const {
       return "max-gradient";
     case ContactNormal::HighestId:
       return "highest-id";
+    case ContactNormal::AverageGradient:
+      return "average-gradient";
     case ContactNormal::Body:
       return std::string(kBodyPrefix) + contact.normal_body;
   }

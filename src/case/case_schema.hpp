@@ -66,9 +66,10 @@ inline constexpr std::array<std::string_view, 14> kProbeFields{
     "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
     "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
 
-// contact.normal: "max-gradient", "highest-id" or "body:NAME"; sets normal and normal_body.
+// contact.normal: "max-gradient", "average-gradient", "highest-id" or "body:NAME"; sets normal
+// and normal_body.
 struct ContactNormalText {
-  std::string expected() const { return "max-gradient, highest-id or body:NAME"; }
+  std::string expected() const { return "max-gradient, average-gradient, highest-id or body:NAME"; }
   void parse(std::string_view text, Contact& contact) const;
   std::string format(const Contact& contact) const;
 };

@@ -33,6 +33,12 @@ Case read_case(Document& doc, const std::vector<Override>& overrides) {
     const YAML::Node& root = std::as_const(doc).root();
     if (!(root["solver"] && root["solver"]["cfl"])) c.solver.cfl = kPeridynamicsCfl;
   }
+  // Three or more bodies meet where two of them meet a third: the contact normal that does not
+  // depend on the bodies' order is their default (docs/validation/multi-particle.md, "Contact
+  // normals"); two bodies keep the thesis' MVG.
+  const YAML::Node& contact = std::as_const(doc).root()["contact"];
+  if (c.bodies.size() >= 3 && !(contact && contact["normal"]))
+    c.contact.normal = ContactNormal::AverageGradient;
   check_consistency(doc, c);
   check_size_limits(doc, c);
   c.key_locations = key_locations(doc);

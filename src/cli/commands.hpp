@@ -16,5 +16,6 @@ void add_sweep(CLI::App& app);
 void add_impact(CLI::App& app);
 void add_vcrit(CLI::App& app);
 void add_calibrate(CLI::App& app);
+void add_deposit(CLI::App& app);
 
 }  // namespace coldspray::cli

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <string_view>
 
+#include "cli/case_text.hpp"
 #include "mpm/setup.hpp"
 
 namespace coldspray::cli {
@@ -38,21 +39,6 @@ double table_diameter_um(double d) {
   return lo[1] + (hi[1] - lo[1]) * (d - lo[0]) / (hi[0] - lo[0]);
 }
 
-// A length in um, as short as reads back to (nearly) the same double: 12 significant digits
-// drop the noise of unit conversion (0.7e-6 * 1e6 = 0.7000000000000001) that a user never typed.
-std::string um(double metres) { return fmt::format("{:.12g} um", metres / kUm); }
-std::string number(double x) { return fmt::format("{:.12g}", x); }
-// "14", "22.5": the diameter and speed in the case's name.
-std::string short_number(double x) { return fmt::format("{:.6g}", x); }
-
-// Keeps letters, digits, '.', '-' and '_' so the name is a folder name (case_schema.hpp).
-std::string folder_safe(std::string text) {
-  for (char& ch : text)
-    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '_')
-      ch = '_';
-  return text;
-}
-
 // The grid of a 3D quarter model: from the symmetry planes x = 0 and y = 0 to the bodies'
 // bounds plus the margin the solver adds when it places the grid itself (mpm/setup.hpp), on
 // multiples of the cell size.
@@ -72,28 +58,6 @@ QuarterGrid quarter_grid(double particle_diameter, const SubstrateSize& substrat
     g.max[d] = std::ceil((hi[d] + margin) / cell - 1e-9) * cell;
   }
   return g;
-}
-
-std::string vector_um(const case_file::Vec3& v) {
-  return fmt::format("[{}, {}, {}]", um(v[0]), um(v[1]), um(v[2]));
-}
-
-// A comment paragraph, wrapped at word boundaries to the repository's 100 columns.
-void append_comment(std::string& y, std::string_view text) {
-  std::size_t row = 1;  // the width of the row being written, "#" included
-  y += '#';
-  while (!text.empty()) {
-    const std::size_t end = std::min(text.find(' '), text.size());
-    if (row > 1 && row + 1 + end > 99) {
-      y += "\n#";
-      row = 1;
-    }
-    y += ' ';
-    y.append(text.substr(0, end));
-    row += 1 + end;
-    text.remove_prefix(std::min(end + 1, text.size()));
-  }
-  y += '\n';
 }
 
 // The bodies: the particle `lift` above z = 0 at t = 0 (0: touching it), moving down at the
@@ -120,20 +84,15 @@ void append_bodies(std::string& y, const ImpactSpec& spec, const std::string& su
   line("    temperature: 298 K");
 }
 
-// The substrate's coarsened seeding (docs/mpm.md, "Coarsened seeding"): fine within
-// kFineRadius D of the axis and kFineDepth D of the top face, D the particle's diameter. On the
-// 14 um / 810 m/s 3D quarter at 0.7/0.175 um these (9.1 um, 5.0 um) take in the splat's
-// footprint (flattening ratio 1.45: radius 10.1 um, the surface staying fine beyond it) and the
-// crater (3.6 um deep), and the particle's verdict and metrics matched the uniform substrate's
-// (docs/validation/coarsening.md).
-constexpr double kFineRadius = 0.65, kFineDepth = 0.36;
+// The substrate's coarsened seeding (docs/mpm.md, "Coarsened seeding"), fine near the impact
+// (impact_case.hpp: kCoarseningFineRadius, kCoarseningFineDepth).
 
 void append_coarsening(std::string& y, const ImpactSpec& spec, const SubstrateSize& substrate) {
-  const double depth = std::min(kFineDepth * spec.diameter, substrate.height);
+  const double depth = std::min(kCoarseningFineDepth * spec.diameter, substrate.height);
   y += fmt::format(
       "    coarsening: {{levels: {}, fine: {{type: cylinder, base_center: [0, 0, -{}], radius: "
       "{}, height: {}}}}}   # coarser points away from the impact (docs/mpm.md)\n",
-      spec.coarsening, um(depth), um(kFineRadius * spec.diameter), um(depth));
+      spec.coarsening, um(depth), um(kCoarseningFineRadius * spec.diameter), um(depth));
 }
 
 // With contact model 1 the particle starts where its nearest points are a cut-off R_c (the

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   cli::add_sweep(app);
   cli::add_vcrit(app);
   cli::add_calibrate(app);
+  cli::add_deposit(app);
 
   run::catch_interrupts();
   try {

@@ -114,6 +114,8 @@ bool first_is_master(const ContactRule& rule, const std::vector<double>& weight,
       break;  // neither is the named body: fall back to the maximum volume gradient
     case case_file::ContactNormal::HighestId:
       return b1 > b2;
+    case case_file::ContactNormal::AverageGradient:
+      return b1 > b2;  // the normal is both bodies'; the master only orients it
     case case_file::ContactNormal::MaxGradient:
       break;
   }
@@ -133,6 +135,22 @@ bool first_is_master(const ContactRule& rule, const std::vector<double>& weight,
   return one;
 }
 
+// The gradient whose direction is the pair's normal, outward of the master: the master's mass
+// gradient (eq 3.30), or with `average-gradient` the master's volume gradient less the other's
+// (thesis §3.5.4: "a function of the two may be selected as the contact normal"; NairnMPM's
+// average volume gradient for two materials, its "avggrad" normal): at a flat interface the two
+// are opposite and it is either body's normal; where
+// the bodies' gradients disagree (an edge, a curved contact, a third body nearby) it takes the
+// plane between them, whichever body is numbered higher.
+Vector3d pair_gradient(const ContactNodes& c, const ContactRule& rule, std::int32_t slot,
+                       int master, int other) {
+  const Vector3d g_master = load(c.mass_gradient, ContactNodes::flat(slot, master));
+  if (rule.normal != case_file::ContactNormal::AverageGradient) return g_master;
+  const Vector3d g_other = load(c.mass_gradient, ContactNodes::flat(slot, other));
+  return g_master / rule.reference_density[c.body(slot, master)] -
+         g_other / rule.reference_density[c.body(slot, other)];
+}
+
 }  // namespace
 
 void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
@@ -149,7 +167,7 @@ void choose_contact_normals(ContactNodes& c, const ContactRule& rule,
                                ? e1
                                : e2;
         const int other = master == e1 ? e2 : e1;
-        Vector3d grad = load(c.mass_gradient, ContactNodes::flat(slot, master));
+        Vector3d grad = pair_gradient(c, rule, slot, master, other);
         for (int d = 0; d < 3; ++d)
           if (held[c.node(slot)] & (1u << d)) grad[d] = 0.0;
         const bool usable = c.mass[ContactNodes::flat(slot, master)] > 0.0 &&

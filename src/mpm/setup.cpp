@@ -15,6 +15,7 @@
 #include "case/key_locations.hpp"
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
+#include "mpm/contact.hpp"
 #include "mpm/phases.hpp"
 #include "mpm/stencil.hpp"
 
@@ -132,6 +133,48 @@ void hold_fixed_point(State& s, std::size_t p) {
         : hold_nodes_of_point<LinearShape, false>(s, p);
 }
 
+// The bodies whose points reach each node at t = 0, counted once each: the points of a body are
+// one range, so a node's last counted body tells whether this one is new to it.
+template <class Shape, bool Axisymmetric>
+std::vector<int> bodies_per_node(const State& s) {
+  std::vector<int> count(s.layout.node_count(), 0), last(s.layout.node_count(), -1);
+  Stencil<Shape, Axisymmetric> st;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (std::size_t p = s.bodies[b].begin; p < s.bodies[b].end; ++p) {
+      st.evaluate(s.layout, s.points, p);
+      st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
+        if (w <= 0.0 || last[n] == static_cast<int>(b)) return;
+        last[n] = static_cast<int>(b);
+        ++count[n];
+      });
+    }
+  return count;
+}
+
+// um, without the rounding noise of the grid's origin (-2e-22 m for 0).
+double micrometres(double metres) { return std::round(metres * 1e12) / 1e6 + 0.0; }
+
+// The contact keeps at most kMaxBodiesPerNode bodies at a node (mpm/contact.hpp); bodies that
+// start with more at one node are bad input rather than a fault of the run's first step.
+void check_bodies_per_node(const case_file::Case& c, const State& s) {
+  const std::vector<int> count = with_discretisation(
+      s, [&]<class Shape, bool Axisymmetric>() { return bodies_per_node<Shape, Axisymmetric>(s); });
+  const auto most = std::max_element(count.begin(), count.end());
+  if (most == count.end() || *most <= kMaxBodiesPerNode) return;
+  const std::size_t n = static_cast<std::size_t>(most - count.begin());
+  const GridLayout& L = s.layout;
+  const std::size_t i = n % L.nodes[0], j = n / L.nodes[0] % L.nodes[1],
+                    k = n / L.nodes[0] / L.nodes[1];
+  case_file::fail_at(
+      c, "bodies",
+      fmt::format("{} bodies reach the grid node at ({:.4g}, {:.4g}, {:.4g}) um at t = 0; the "
+                  "contact holds at most {} bodies at a node (docs/mpm.md): move the bodies "
+                  "apart by two cells",
+                  *most, micrometres(L.coordinate(0, static_cast<int>(i))),
+                  micrometres(L.coordinate(1, static_cast<int>(j))),
+                  micrometres(L.coordinate(2, static_cast<int>(k))), kMaxBodiesPerNode));
+}
+
 }  // namespace
 
 State build_state(const case_file::Case& c) {
@@ -161,6 +204,7 @@ State build_state(const case_file::Case& c) {
       if (seeded[b].points.outside[i] & fixed) hold_fixed_point(s, s.bodies[b].begin + i);
   }
 
+  check_bodies_per_node(c, s);
   with_discretisation(s, [&]<class Shape, bool Axisymmetric>() {
     std::get<std::vector<Stencil<Shape, Axisymmetric>>>(s.stencils).resize(total);
   });

@@ -33,6 +33,8 @@ void write_snapshot(const bodies::Bodies& s, const std::filesystem::path& path) 
   cloud.add_scalar("bond", P.bond);
   cloud.add_int("bonded_to", bonded_to);
   cloud.add_scalar("bond_damage", P.bond_damage);
+  // The point's domain, m: what a section draws of it (a coarsened point stands for a block).
+  cloud.add_vector("half_width", P.half_width);
   if (!s.family_size.empty()) {
     const std::vector<std::int32_t> neighbours(s.family_size.begin(), s.family_size.end());
     cloud.add_int("neighbours", neighbours);

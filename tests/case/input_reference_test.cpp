@@ -113,7 +113,8 @@ TEST(InputReference, DocumentsEveryKeyAndChoice) {
   for (const std::string& word : vocabulary.words()) {
     EXPECT_TRUE(testing::contains(text.str(), "`" + word + "`"));
   }
-  for (const char* form : {"`max-gradient`", "`highest-id`", "`body:NAME`", "`base`"}) {
+  for (const char* form :
+       {"`max-gradient`", "`average-gradient`", "`highest-id`", "`body:NAME`", "`base`"}) {
     EXPECT_TRUE(testing::contains(text.str(), form));
   }
 }

@@ -225,3 +225,34 @@ TEST(LoadCaseText, ApplyOverridesEmitsTheEditedTree) {
 
 }  // namespace
 }  // namespace coldspray::case_file
+
+namespace coldspray::case_file {
+namespace {
+
+// Three blocks side by side; `extra` is added to the case.
+std::string three_bodies(const std::string& extra) {
+  std::string text = "name: three\nbodies:\n";
+  for (const char* name : {"a", "b", "c"})
+    text += std::string("  - {name: ") + name +
+            ", material: al-ptw, shape: {type: sphere, center: [0, 0, " +
+            (name[0] == 'a'   ? "0"
+             : name[0] == 'b' ? "10 um"
+                              : "20 um") +
+            "], radius: 4 um}, spacing: 1 um}\n";
+  return text + "grid: {cell_size: 2 um}\nsolver: {end_time: 1 ns}\n" + extra;
+}
+
+// The contact normal's default: MVG for two bodies (FillsEveryDefault, one body), the
+// order-independent average gradient for three or more; a given rule is kept.
+TEST(LoadCase, ThreeBodiesDefaultToTheAverageGradientNormal) {
+  EXPECT_EQ(load_case_text("three", three_bodies("")).contact.normal,
+            ContactNormal::AverageGradient);
+  EXPECT_EQ(load_case_text("three", three_bodies("contact: {friction: 0.1}\n")).contact.normal,
+            ContactNormal::AverageGradient);
+  EXPECT_EQ(load_case_text("three", three_bodies("contact: {normal: highest-id}\n")).contact.normal,
+            ContactNormal::HighestId);
+  EXPECT_EQ(load_case_text("generated", kGenerated).contact.normal, ContactNormal::MaxGradient);
+}
+
+}  // namespace
+}  // namespace coldspray::case_file

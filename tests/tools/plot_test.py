@@ -7,7 +7,9 @@ from COLDSPRAY_PLOT (set by ctest), else tools/coldspray_plot.py next to this te
 """
 
 import importlib.util
+import json
 import os
+import shutil
 import struct
 import subprocess
 import sys
@@ -260,6 +262,17 @@ class PlotToolTest(unittest.TestCase):
         self.assertEqual(len(section.h), 16 + 24)  # one layer of three
         self.assertEqual(set(section.values["velocity.z"]), {-100.0, 0.0})
 
+    def test_3d_section_cuts_and_draws_each_point_by_its_half_widths(self):
+        case = self.tool.CaseInfo(os.path.join(self.xyz, "case.resolved.yaml"))
+        s = 0.175e-6
+        points = np.array([[0.0, 0.5 * s, 0.0], [0.0, 1.5 * s, 0.0], [1e-6, 2 * s, 0.0]])
+        half = np.array([[0.5 * s] * 3, [0.5 * s] * 3, [2 * s] * 3])  # the last: a 4 s block
+        data = self.tool.VtuData(points, {"body": np.array([1, 1, 1]), "half_width": half,
+                                          "eqps": np.zeros(3)})
+        section = self.tool.make_section(data, case, [1], ["eqps"], "test")
+        self.assertEqual(list(section.h), [0.0, 1e-6])  # the plane y = 0 crosses these two
+        self.assertEqual(list(section.size), [s, 4 * s])
+
     def test_3d_material_cut_follows_the_points_that_started_in_the_layer(self):
         case = self.tool.CaseInfo(os.path.join(self.xyz, "case.resolved.yaml"))
         first = self.tool.read_vtu(os.path.join(self.xyz, "snapshots", "step_00000000.vtu"))
@@ -428,6 +441,31 @@ class PlotToolTest(unittest.TestCase):
         self.assert_failed_without_png(self.run_tool("bond-strength", folder, "--key",
                                                      "bodies.other.velocity", "--out", missing),
                                        missing, "bodies.other.velocity")
+
+    def test_deposit_draws_the_thickness_map_and_a_section(self):
+        folder = self.out("deposit")
+        shutil.copytree(self.xyz, folder)
+        with open(os.path.join(folder, "deposit.json"), "w") as f:
+            json.dump({"patch": [2e-6, 2e-6], "deposition_efficiency": 1.0, "porosity": 0.25,
+                       "mean_thickness": 1.5e-6,
+                       "particles": [{"name": "p1", "centre": [0, 0, 1e-6], "diameter": 1e-6,
+                                      "verdict": "bonded"}],
+                       "thickness_map": {"columns_x": 2, "columns_y": 2,
+                                         "values": [1e-6, 2e-6, 0.0, 3e-6]}}, f)
+        drawn = []  # the map the tool draws, in um
+        axes = self.tool.plt.Axes
+        imshow = axes.imshow
+        axes.imshow = lambda ax, image, *a, **k: drawn.append(image.tolist()) or imshow(
+            ax, image, *a, **k)
+        try:
+            self.tool.command_deposit(self.tool.build_parser().parse_args(
+                ["deposit", folder, "--out", self.out("deposit.png")]))
+        finally:
+            axes.imshow = imshow
+        self.assertEqual(drawn, [[[1.0, 2.0], [0.0, 3.0]]])  # rows along y, x fastest
+        missing = self.out("deposit-missing.png")
+        self.assert_failed_without_png(self.run_tool("deposit", self.rz, "--out", missing),
+                                       missing, "deposit.json")
 
     def test_calibration_draws_verdicts_or_tolerances(self):
         for by in ("verdict", "cor-pbcp"):

@@ -1,0 +1,193 @@
+// `coldspray deposit DEPOSIT.yaml`: many particles sprayed onto a substrate in one 3D run
+// (docs/deposit.md). Places the particles (studies/deposit_placement.hpp), builds the case
+// (cli/deposit_case.hpp), runs it, then reports each particle's verdict and measures and the
+// deposit's: deposition efficiency, porosity, thickness (run/deposit_measures.hpp), into
+// RUN/deposit.json and on the terminal.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "case/load.hpp"
+#include "cli/commands.hpp"
+#include "cli/deposit_case.hpp"
+#include "cli/deposit_file.hpp"
+#include "cli/impact_options.hpp"
+#include "cli/run_report.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "run/checkpoints.hpp"
+#include "run/deposit_measures.hpp"
+
+namespace coldspray::cli {
+
+namespace {
+
+struct Options {
+  std::string path, write_case;
+  RunFlags run;
+};
+
+// The placement, or InputError at the file's patch when a particle found no place.
+studies::Placement place(const DepositFile& file) {
+  studies::Placement placement = studies::place_particles(file.plan);
+  if (placement.unplaced >= 0) {
+    const std::size_t k = static_cast<std::size_t>(placement.unplaced);
+    throw InputError(
+        file.patch_where, "patch",
+        fmt::format("particle {} of {} found no place {} um clear of the particles placed before "
+                    "it in {} draws: widen the patch or the arrival_window, or spray fewer",
+                    k + 1, file.plan.count, file.plan.clearance * 1e6, studies::kPlacementTries));
+  }
+  return placement;
+}
+
+struct ParticleRow {
+  std::string name;
+  const studies::PlacedParticle* placed = nullptr;
+  const metrics::BodyMetrics* body = nullptr;
+  double sprayed_mass = 0.0;                                    // kg, departed points included
+  double bonded_to_particles = 0.0, bonded_to_substrate = 0.0;  // m^2
+  bool bonded = false;
+};
+
+std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
+                                       const run::Summary& summary) {
+  const std::vector<std::string> names =
+      particle_names(static_cast<int>(placement.particles.size()));
+  const std::size_t substrate = summary.bodies.size() - 1;
+  std::vector<ParticleRow> rows;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    ParticleRow r;
+    r.name = names[i];
+    r.placed = &placement.particles[i];
+    r.body = &summary.bodies[i];
+    r.sprayed_mass = r.body->mass + r.body->departed.mass;
+    const std::vector<double>& with = r.body->impact.bonded_area_with;
+    for (std::size_t o = 0; o < with.size(); ++o)
+      (o == substrate ? r.bonded_to_substrate : r.bonded_to_particles) += with[o];
+    r.bonded = r.body->verdict && r.body->verdict->outcome == metrics::Outcome::Bonded;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+nlohmann::ordered_json number(double x) {
+  return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
+}
+
+void write_deposit_json(const std::filesystem::path& path, const DepositFile& file,
+                        const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit) {
+  const metrics::DepositShape& shape = deposit.shape;
+  nlohmann::ordered_json j;
+  j["name"] = file.name;
+  j["seed"] = file.plan.seed;
+  j["patch"] = file.plan.patch;
+  j["deposition_efficiency"] = deposit.efficiency;
+  j["porosity"] = shape.porosity;
+  j["mean_thickness"] = shape.mean_thickness;
+  j["max_thickness"] = shape.max_thickness;
+  j["coverage"] = shape.coverage;
+  j["voxel"] = file.voxel;
+  nlohmann::ordered_json particles = nlohmann::ordered_json::array();
+  for (const ParticleRow& r : rows) {
+    const metrics::ImpactMeasures& m = r.body->impact;
+    particles.push_back(
+        {{"name", r.name},
+         {"diameter", r.placed->diameter},
+         {"speed", r.placed->speed},
+         {"arrival", r.placed->arrival},
+         {"centre", r.placed->centre},
+         {"verdict", r.body->verdict ? std::string(metrics::outcome_name(r.body->verdict->outcome))
+                                     : std::string("none")},
+         {"cor", number(m.cor)},
+         {"v_rest", number(m.v_rest)},
+         {"pbcp", m.pbcp},
+         {"flattening_ratio", m.flattening_ratio},
+         {"bonded_area", m.bonded_area},
+         {"bonded_area_to_particles", r.bonded_to_particles},
+         {"bonded_area_to_substrate", r.bonded_to_substrate},
+         {"jetted_fraction", m.jetted_fraction},
+         {"sprayed_mass", r.sprayed_mass}});
+  }
+  j["particles"] = particles;
+  // The deposit's top above the substrate's first surface per voxel column, x fastest: the
+  // thickness map the picture draws.
+  j["thickness_map"] = {{"columns_x", shape.columns[0]},
+                        {"columns_y", shape.columns[1]},
+                        {"values", shape.thickness}};
+  io::write_atomically(path, [&](std::ostream& out) { out << j.dump(1) << "\n"; });
+}
+
+void print_deposit(const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit,
+                   std::ostream& out) {
+  const metrics::DepositShape& shape = deposit.shape;
+  out << "particle  d (um)  v (m/s)  arrival (ns)  verdict    cor      flattening  bonded area "
+         "(um^2): to particles / to substrate\n";
+  for (const ParticleRow& r : rows) {
+    const metrics::ImpactMeasures& m = r.body->impact;
+    out << fmt::format(
+        "{:<9} {:<7.4g} {:<8.4g} {:<13.4g} {:<10} {:<8.3g} {:<11.4g} {:.4g} / {:.4g}\n", r.name,
+        r.placed->diameter * 1e6, r.placed->speed, r.placed->arrival * 1e9,
+        r.body->verdict ? metrics::outcome_name(r.body->verdict->outcome) : "none", m.cor,
+        m.flattening_ratio, r.bonded_to_particles * 1e12, r.bonded_to_substrate * 1e12);
+  }
+  int bonded = 0;
+  for (const ParticleRow& r : rows) bonded += r.bonded ? 1 : 0;
+  out << fmt::format(
+      "deposit: {} of {} particles bonded, deposition efficiency {:.3g} %, porosity {:.3g} %, "
+      "thickness {:.3g} um mean over the patch ({:.3g} um at most), coverage {:.3g} %\n",
+      bonded, rows.size(), 100.0 * deposit.efficiency, 100.0 * shape.porosity,
+      shape.mean_thickness * 1e6, shape.max_thickness * 1e6, 100.0 * shape.coverage);
+}
+
+}  // namespace
+
+void add_deposit(CLI::App& app) {
+  auto opt = std::make_shared<Options>();
+  auto* sub = app.add_subcommand(
+      "deposit",
+      "Spray many particles onto a substrate in one 3D run and measure the deposit "
+      "(docs/deposit.md)");
+  sub->add_option("deposit", opt->path, "Deposit file (YAML)")->required();
+  sub->add_option("--write-case", opt->write_case,
+                  "Write the generated case file and stop (edit it, then `coldspray run` it)");
+  add_run_flags(*sub, opt->run);
+  sub->callback([opt] {
+    const DepositFile file = read_deposit_file(opt->path);
+    const studies::Placement placement = place(file);
+    const GeneratedCase g = deposit_case(file, placement);
+    const case_file::Case c = case_file::load_case_text(opt->path + " (its generated case)", g.yaml,
+                                                        g.origins, parse_overrides(opt->run.sets));
+    if (!opt->write_case.empty()) {
+      io::require_replaceable(opt->write_case, "--write-case");
+      io::write_atomically(opt->write_case, [&](std::ostream& out) { out << g.yaml; });
+      std::cout << fmt::format("wrote {} (run it with: coldspray run {})\n", opt->write_case,
+                               shell_quoted(opt->write_case));
+      return;
+    }
+    const Report report = run_and_report(c, opt->run, std::cout);
+    const std::vector<ParticleRow> rows = particle_rows(placement, report.summary);
+    std::vector<double> masses;
+    std::vector<bool> bonded;
+    for (const ParticleRow& r : rows) {
+      masses.push_back(r.sprayed_mass);
+      bonded.push_back(r.bonded);
+    }
+    const run::DepositMeasures measures = run::deposit_measures(
+        c, run::find_checkpoint(report.out_dir), masses, bonded, file.plan.patch, file.voxel);
+    write_deposit_json(report.out_dir / "deposit.json", file, rows, measures);
+    print_deposit(rows, measures, std::cout);
+    std::cout << fmt::format(
+        "picture: /usr/bin/python3 tools/coldspray_plot.py deposit {} --out {}\n",
+        shell_quoted(report.out_dir.string()),
+        shell_quoted((report.out_dir / "deposit.png").string()));
+    print_results_location(report.out_dir, std::cout);
+  });
+}
+
+}  // namespace coldspray::cli
