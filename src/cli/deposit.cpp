@@ -28,9 +28,34 @@ namespace coldspray::cli {
 namespace {
 
 struct Options {
-  std::string path, write_case;
+  std::string path, write_case, restart;
   RunFlags run;
 };
+
+// A restarted deposit's case is its checkpoint's; the file's placement must be the one it was
+// made from (the same particles, sizes, starts and speeds), since the report reads them from it.
+void check_same_particles(const case_file::Case& c, const studies::Placement& placement,
+                          const std::string& file) {
+  const std::vector<std::string> names =
+      particle_names(static_cast<int>(placement.particles.size()));
+  bool same = c.bodies.size() == names.size() + 1;
+  for (std::size_t i = 0; same && i < names.size(); ++i) {
+    const studies::PlacedParticle& p = placement.particles[i];
+    const auto* sphere = std::get_if<case_file::Sphere>(&c.bodies[i].shape);
+    // The case file holds 12 significant digits of each length and speed.
+    const double tolerance = 1e-9 * p.diameter;
+    same = c.bodies[i].name == names[i] && sphere &&
+           std::abs(2.0 * sphere->radius - p.diameter) < tolerance &&
+           std::abs(c.bodies[i].velocity[2] + p.speed) < 1e-9 * p.speed;
+    for (int d = 0; same && d < 3; ++d)
+      same = std::abs(sphere->center[d] - p.centre[d]) < tolerance;
+  }
+  if (!same)
+    throw InputError("--restart", "",
+                     fmt::format("the run's bodies are not the particles {} places: restart a "
+                                 "deposit with the file it was run from",
+                                 file));
+}
 
 // The placement, or InputError at the file's patch when a particle found no place.
 studies::Placement place(const DepositFile& file) {
@@ -145,6 +170,28 @@ void print_deposit(const std::vector<ParticleRow>& rows, const run::DepositMeasu
       shape.mean_thickness * 1e6, shape.max_thickness * 1e6, 100.0 * shape.coverage);
 }
 
+// The particles' rows and the deposit's measures from the finished run: deposit.json, the
+// terminal's table, where the picture and the results are.
+void report_deposit(const DepositFile& file, const studies::Placement& placement,
+                    const case_file::Case& c, const Report& report) {
+  const std::vector<ParticleRow> rows = particle_rows(placement, report.summary);
+  std::vector<double> masses;
+  std::vector<bool> bonded;
+  for (const ParticleRow& r : rows) {
+    masses.push_back(r.sprayed_mass);
+    bonded.push_back(r.bonded);
+  }
+  const run::DepositMeasures measures = run::deposit_measures(
+      c, run::find_checkpoint(report.out_dir), masses, bonded, file.plan.patch, file.voxel);
+  write_deposit_json(report.out_dir / "deposit.json", file, rows, measures);
+  print_deposit(rows, measures, std::cout);
+  std::cout << fmt::format(
+      "picture: /usr/bin/python3 tools/coldspray_plot.py deposit {} --out {}\n",
+      shell_quoted(report.out_dir.string()),
+      shell_quoted((report.out_dir / "deposit.png").string()));
+  print_results_location(report.out_dir, std::cout);
+}
+
 }  // namespace
 
 void add_deposit(CLI::App& app) {
@@ -154,12 +201,23 @@ void add_deposit(CLI::App& app) {
       "Spray many particles onto a substrate in one 3D run and measure the deposit "
       "(docs/deposit.md)");
   sub->add_option("deposit", opt->path, "Deposit file (YAML)")->required();
-  sub->add_option("--write-case", opt->write_case,
-                  "Write the generated case file and stop (edit it, then `coldspray run` it)");
+  auto* write =
+      sub->add_option("--write-case", opt->write_case,
+                      "Write the generated case file and stop (edit it, then `coldspray run` it)");
+  sub->add_option("--restart", opt->restart,
+                  "Continue the deposit's run from its latest checkpoint (its run folder), then "
+                  "report it")
+      ->excludes(write);
   add_run_flags(*sub, opt->run);
   sub->callback([opt] {
     const DepositFile file = read_deposit_file(opt->path);
     const studies::Placement placement = place(file);
+    if (!opt->restart.empty()) {
+      const case_file::Case c = restart_case(opt->restart, opt->run);
+      check_same_particles(c, placement, opt->path);
+      report_deposit(file, placement, c, run_and_report(c, opt->run, std::cout));
+      return;
+    }
     const GeneratedCase g = deposit_case(file, placement);
     const case_file::Case c = case_file::load_case_text(opt->path + " (its generated case)", g.yaml,
                                                         g.origins, parse_overrides(opt->run.sets));
@@ -170,23 +228,7 @@ void add_deposit(CLI::App& app) {
                                shell_quoted(opt->write_case));
       return;
     }
-    const Report report = run_and_report(c, opt->run, std::cout);
-    const std::vector<ParticleRow> rows = particle_rows(placement, report.summary);
-    std::vector<double> masses;
-    std::vector<bool> bonded;
-    for (const ParticleRow& r : rows) {
-      masses.push_back(r.sprayed_mass);
-      bonded.push_back(r.bonded);
-    }
-    const run::DepositMeasures measures = run::deposit_measures(
-        c, run::find_checkpoint(report.out_dir), masses, bonded, file.plan.patch, file.voxel);
-    write_deposit_json(report.out_dir / "deposit.json", file, rows, measures);
-    print_deposit(rows, measures, std::cout);
-    std::cout << fmt::format(
-        "picture: /usr/bin/python3 tools/coldspray_plot.py deposit {} --out {}\n",
-        shell_quoted(report.out_dir.string()),
-        shell_quoted((report.out_dir / "deposit.png").string()));
-    print_results_location(report.out_dir, std::cout);
+    report_deposit(file, placement, c, run_and_report(c, opt->run, std::cout));
   });
 }
 

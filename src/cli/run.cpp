@@ -7,7 +7,6 @@
 #include "cli/commands.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
-#include "run/checkpoints.hpp"
 
 namespace coldspray::cli {
 
@@ -31,17 +30,9 @@ void add_run(CLI::App& app) {
   sub->callback([opt] {
     if (opt->restart.empty() && opt->case_path.empty())
       throw InputError("run", "", "needs a case file, or --restart RUN_FOLDER");
-    if (!opt->restart.empty()) {
-      // The case is the checkpoint's: a restarted run is the run it continues.
-      if (!opt->run.sets.empty() || !opt->run.out_dir.empty())
-        throw InputError("--restart", "",
-                         "continues a run as it was: --set and --out do not apply to it");
-      opt->run.restart_from = run::find_checkpoint(opt->restart);
-      opt->run.out_dir = opt->run.restart_from.parent_path().parent_path().string();
-    }
     const case_file::Case c =
         opt->restart.empty() ? case_file::load_case(opt->case_path, parse_overrides(opt->run.sets))
-                             : run::checkpoint_case(opt->run.restart_from);
+                             : restart_case(opt->restart, opt->run);
     const Report report = run_and_report(c, opt->run, std::cout);
     print_results_location(report.out_dir, std::cout);
   });

@@ -8,6 +8,7 @@
 #include "cli/case_summary.hpp"
 #include "cli/thread_count.hpp"
 #include "core/error.hpp"
+#include "run/checkpoints.hpp"
 #include "run/run.hpp"
 #include "run/run_folder.hpp"
 
@@ -27,6 +28,16 @@ std::vector<case_file::Override> parse_overrides(const std::vector<std::string>&
   std::vector<case_file::Override> overrides;
   for (const auto& s : sets) overrides.push_back(case_file::parse_override(s));
   return overrides;
+}
+
+case_file::Case restart_case(const std::string& run_or_checkpoint, RunFlags& flags) {
+  // The case is the checkpoint's: a restarted run is the run it continues.
+  if (!flags.sets.empty() || !flags.out_dir.empty())
+    throw InputError("--restart", "",
+                     "continues a run as it was: --set and --out do not apply to it");
+  flags.restart_from = run::find_checkpoint(run_or_checkpoint);
+  flags.out_dir = flags.restart_from.parent_path().parent_path().string();
+  return run::checkpoint_case(flags.restart_from);
 }
 
 Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostream& out) {

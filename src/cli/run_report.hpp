@@ -33,6 +33,11 @@ void add_run_flags(CLI::App& sub, RunFlags& flags);
 // The --set texts as overrides; InputError for one that is not KEY=VALUE.
 std::vector<case_file::Override> parse_overrides(const std::vector<std::string>& sets);
 
+// `--restart RUN_OR_CHECKPOINT`: the run continues from that checkpoint (a run folder's latest),
+// in its own folder, as the case the checkpoint holds; sets flags.restart_from and out_dir.
+// InputError if there is no checkpoint, or with --set or --out, which a restart cannot apply.
+case_file::Case restart_case(const std::string& run_or_checkpoint, RunFlags& flags);
+
 struct Report {
   run::Summary summary;
   std::filesystem::path out_dir;

@@ -90,6 +90,18 @@ TEST(Deposit, ReportsEachParticleAndTheDeposit) {
   EXPECT_LT(d["porosity"].get<double>(), 1.0);
   // The voxel is the spacing: a 6 um patch is 12 x 12 columns.
   EXPECT_EQ(d["thickness_map"]["values"].size(), 144u);
+
+  // --restart continues the run from its last checkpoint (here its end) and reports it again;
+  // a file that places other particles is refused.
+  const std::string first = read_text(dir / "run" / "deposit.json");
+  const auto again = run_coldspray("deposit small.yaml --restart run --threads 1 --quiet", dir);
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(read_text(dir / "run" / "deposit.json"), first);
+  write(dir, "other.yaml", replaced(kSmall, "seed: 3", "seed: 4"));
+  const auto other = run_coldspray("deposit other.yaml --restart run --quiet", dir);
+  EXPECT_EQ(other.status, 2) << other.output;
+  EXPECT_TRUE(has(other, "--restart: the run's bodies are not the particles other.yaml places"))
+      << other.output;
 }
 
 // The same file writes the same case; another seed places the particles elsewhere.
