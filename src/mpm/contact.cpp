@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -38,12 +39,25 @@ int ContactNodes::entry(std::int32_t s, int b) {
   const int found = find(s, b);
   if (found >= 0) return found;
   const int e = body_count_[s];
-  if (e == kMaxBodiesPerNode)
-    throw RunFault(
-        fmt::format("more than {} bodies meet at grid node {}", kMaxBodiesPerNode, node_[s]));
+  if (e == kMaxBodiesPerNode) {
+    std::atomic_ref<std::size_t> overflow(overflow_node_);
+    std::size_t lowest = overflow.load();
+    while (node_[s] < lowest && !overflow.compare_exchange_weak(lowest, node_[s])) {
+    }
+    return -1;
+  }
   body_[flat(s, e)] = static_cast<std::int16_t>(b);
   body_count_[s] = static_cast<std::uint8_t>(e + 1);
   return e;
+}
+
+void ContactNodes::raise_overflow() const {
+  const std::size_t node = overflow_node_;
+  if (node != kNoOverflow)
+    throw RunFault(
+        fmt::format("more than {} bodies meet at grid node {}: the contact holds no more "
+                    "(mpm/contact.hpp)",
+                    kMaxBodiesPerNode, node));
 }
 
 void ContactNodes::grow(std::size_t slots) {

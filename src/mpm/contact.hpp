@@ -14,7 +14,9 @@
 
 namespace coldspray::mpm {
 
-inline constexpr int kMaxBodiesPerNode = 4;
+// Up to 8: a deposit's ten particles crowd five bodies onto a node (issue 27's ten-particle run
+// stopped there with 4).
+inline constexpr int kMaxBodiesPerNode = 8;
 inline constexpr int kMaxPairsPerNode = kMaxBodiesPerNode * (kMaxBodiesPerNode - 1) / 2;
 
 class ContactNodes {
@@ -22,11 +24,18 @@ class ContactNodes {
   // Slots in use this step.
   std::size_t size() const { return count_; }
   // Forget all slots (keeps capacity).
-  void clear() { count_ = 0; }
+  void clear() {
+    count_ = 0;
+    overflow_node_ = kNoOverflow;
+  }
   // A new slot for grid node `node`; grows the storage only when its capacity is exceeded.
   std::int32_t add(std::size_t node);
-  // The entry of body `b` at slot `s`, added if absent. Throws RunFault past kMaxBodiesPerNode.
+  // The entry of body `b` at slot `s`, added if absent; -1 past kMaxBodiesPerNode, recorded for
+  // raise_overflow (points are mapped in parallel, where nothing may throw).
   int entry(std::int32_t s, int b);
+  // Throws RunFault naming the lowest grid node that more than kMaxBodiesPerNode bodies reached
+  // since clear(), if one did.
+  void raise_overflow() const;
   // The entry of body `b` at slot `s`, or -1.
   int find(std::int32_t s, int b) const;
 
@@ -98,6 +107,8 @@ class ContactNodes {
  private:
   void grow(std::size_t slots);
   std::size_t count_ = 0;
+  static constexpr std::size_t kNoOverflow = static_cast<std::size_t>(-1);
+  std::size_t overflow_node_ = kNoOverflow;  // written through std::atomic_ref
   std::vector<std::size_t> node_;
   std::vector<std::uint8_t> body_count_;
   std::vector<std::int16_t> body_;

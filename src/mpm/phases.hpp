@@ -124,7 +124,9 @@ void map_bodies_to_contact_nodes(State& s) {
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       const std::int32_t slot = s.grid.contact_slot[n];
       if (slot < 0) return;
-      const std::size_t e = ContactNodes::flat(slot, cn.entry(slot, b));
+      const int entry = cn.entry(slot, b);
+      if (entry < 0) return;  // one body too many: raised below
+      const std::size_t e = ContactNodes::flat(slot, entry);
       double f[3];
       c.force(w, gx, gy, gz, f);
       const double grad[3] = {gx, gy, gz};
@@ -136,6 +138,7 @@ void map_bodies_to_contact_nodes(State& s) {
       }
     });
   });
+  cn.raise_overflow();
 }
 
 // A point of entry e, bonded to body `partner`, covers the node at `slot`: its side of the pair

@@ -60,6 +60,29 @@ TEST(Faults, UnstableAbsorbingFacesStopWithStatus3AtTheFirstCheck) {
   EXPECT_TRUE(fs::exists(f.out / "checkpoints/step_00000010.h5"));
 }
 
+// It aborted (SIGABRT): the contact storage's overflow was thrown inside the parallel mapping.
+// Nine bodies that reach one node mid-run stop the run with status 3, the diagnostic, a last
+// snapshot and a checkpoint.
+TEST(Faults, MoreBodiesAtANodeThanTheContactHoldsStopWithStatus3) {
+  const std::string dir = make_temp_dir("faults");
+  const auto r =
+      run_coldspray("run '" + std::string(COLDSPRAY_TEST_DATA) +
+                        "/cli/nine-bodies-converge.yaml' --out result --quiet --threads 2",
+                    dir);
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("fault: more than 8 bodies meet at grid node"), std::string::npos)
+      << r.output;
+  const fs::path out = fs::path(dir) / "result";
+  std::ifstream in(out / "summary.json");
+  ASSERT_TRUE(in) << r.output;
+  const std::string status = nlohmann::json::parse(in)["status"];
+  EXPECT_EQ(status.rfind("fault: more than 8 bodies meet at grid node", 0), 0u) << status;
+  int snapshots = 0;
+  for (const auto& f : fs::directory_iterator(out / "snapshots")) snapshots += f.is_regular_file();
+  EXPECT_EQ(snapshots, 2);  // t = 0 and the fault's
+  EXPECT_FALSE(fs::is_empty(out / "checkpoints"));
+}
+
 // The checks run every kFaultCheckStride steps, not when a history row falls due: rows at every
 // step or every 5 ns, the run faults at the same step with the same diagnostic, and its history
 // ends with a row at the fault time either way.

@@ -81,16 +81,16 @@ TEST(InputGuards, SetUpErrorsNameFileLineAndColumn) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-// It failed in the first step with exit 3 ("more than 4 bodies meet at grid node"): bodies that
+// It failed in the first step with exit 3 ("more than 8 bodies meet at grid node"): bodies that
 // start with more at a node than the contact holds are bad input.
-TEST(InputGuards, FiveBodiesAtOneNodeAreRefusedBeforeTheRun) {
+TEST(InputGuards, NineBodiesAtOneNodeAreRefusedBeforeTheRun) {
   const std::string dir = make_temp_dir();
   const auto r =
-      run_coldspray("run '" + kData + "/cli/five-bodies-at-a-node.yaml' --out result", dir);
+      run_coldspray("run '" + kData + "/cli/nine-bodies-at-a-node.yaml' --out result", dir);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_TRUE(has(r,
-                  "five-bodies-at-a-node.yaml:4:1: key 'bodies': 5 bodies reach the grid node "
-                  "at (0, 0, 0) um at t = 0; the contact holds at most 4 bodies at a node"))
+                  "nine-bodies-at-a-node.yaml:4:1: key 'bodies': 9 bodies reach the grid node "
+                  "at (0, 0, 0) um at t = 0; the contact holds at most 8 bodies at a node"))
       << r.output;
   EXPECT_TRUE(fs::is_empty(dir));
 }
