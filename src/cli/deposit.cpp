@@ -20,6 +20,7 @@
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json_number.hpp"
 #include "run/checkpoints.hpp"
 #include "run/deposit_measures.hpp"
 
@@ -101,10 +102,6 @@ std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
   return rows;
 }
 
-nlohmann::ordered_json number(double x) {
-  return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
-}
-
 void write_deposit_json(const std::filesystem::path& path, const DepositFile& file,
                         const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit) {
   const metrics::DepositShape& shape = deposit.shape;
@@ -129,8 +126,8 @@ void write_deposit_json(const std::filesystem::path& path, const DepositFile& fi
          {"centre", r.placed->centre},
          {"verdict", r.body->verdict ? std::string(metrics::outcome_name(r.body->verdict->outcome))
                                      : std::string("none")},
-         {"cor", number(m.cor)},
-         {"v_rest", number(m.v_rest)},
+         {"cor", io::json_number(m.cor)},
+         {"v_rest", io::json_number(m.v_rest)},
          {"pbcp", m.pbcp},
          {"flattening_ratio", m.flattening_ratio},
          {"bonded_area", m.bonded_area},

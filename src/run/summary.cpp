@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/json_number.hpp"
 
 namespace coldspray::run {
 
@@ -35,10 +36,7 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                  {"total_initial", s.total_energy_initial},
                  {"relative_error", s.energy_relative_error()}};
   nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
-  // JSON has no NaN: an undefined measure (cor of a body that started at rest) is null.
-  auto number = [](double x) {
-    return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
-  };
+  const auto number = io::json_number;
   int moving = 0, bonded = 0, undecided = 0;
   std::vector<metrics::ImpactMeasures> measures;
   for (const auto& b : s.bodies) {
