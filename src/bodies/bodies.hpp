@@ -59,12 +59,14 @@ struct AbsorbingPoint {
 // whatever the threads.
 struct Fault {
   std::size_t point = std::numeric_limits<std::size_t>::max();
-  std::string cause;
+  // A string literal: faults are recorded inside parallel regions, where an allocation's
+  // exception could not leave the region and would abort the program.
+  const char* cause = "";
 };
 
 // Records a fault at point p unless one at a lower index is recorded (safe to call from
 // threads), so the report is the same whatever the threads.
-void record_fault(Fault& fault, std::size_t p, const char* cause);
+void record_fault(Fault& fault, std::size_t p, const char* cause) noexcept;
 
 struct Bodies;
 // Throws RunFault naming the body, point (its index at t = 0), position, time and cause of the

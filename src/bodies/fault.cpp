@@ -8,7 +8,7 @@
 
 namespace coldspray::bodies {
 
-void record_fault(Fault& fault, std::size_t p, const char* cause) {
+void record_fault(Fault& fault, std::size_t p, const char* cause) noexcept {
 #pragma omp critical(coldspray_fault)
   if (p < fault.point) {
     fault.point = p;

@@ -84,10 +84,7 @@ namespace {
 class Coarsener {
  public:
   Coarsener(const case_file::Shape& shape, const Lattice& lattice, const case_file::Shape& fine)
-      : shape_(shape),
-        fine_(bounding_box(fine)),
-        s_(lattice.spacing),
-        axisymmetric_(lattice.axisymmetric) {}
+      : shape_(shape), fine_(fine), s_(lattice.spacing), axisymmetric_(lattice.axisymmetric) {}
 
   // The cube of edge b whose lowest corner is lo: one point if it may be, else its 8 (4 in r-z)
   // halves, down to single lattice sites.
@@ -111,14 +108,12 @@ class Coarsener {
   // The directions a cube spans: y has a single site in r-z.
   Vec3 in_plane() const { return axisymmetric_ ? Vec3(1.0, 0.0, 1.0) : Vec3::Ones(); }
 
-  // Whether the cube, grown by its own edge on every side, meets the box around the fine region:
-  // each level of coarsening starts at least its own edge away from the level below.
+  // Whether the cube, grown by its own edge on every side, meets the fine region: each level of
+  // coarsening starts at least its own edge away from the level below. (In r-z the cube lies in
+  // the plane y = 0 of the sites.)
   bool near_fine(const Vec3& lo, double b) const {
-    for (int d = 0; d < 3; ++d) {
-      if (axisymmetric_ && d == 1) continue;
-      if (lo[d] - b > fine_.max[d] || lo[d] + 2.0 * b < fine_.min[d]) return false;
-    }
-    return true;
+    Bounds grown{lo - b * in_plane(), lo + 2.0 * b * in_plane()};
+    return meets(fine_, grown);
   }
 
   // Whether the cube grown by one spacing lies inside the shape: its corners do, the shapes
@@ -134,7 +129,7 @@ class Coarsener {
   }
 
   const case_file::Shape& shape_;
-  Bounds fine_;
+  const case_file::Shape& fine_;
   double s_;
   bool axisymmetric_;
 };

@@ -48,7 +48,7 @@ struct SeededPoints {
 SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice);
 
 // Seeds the same lattice, but where a cube of 2^l x 2^l (x 2^l) sites, l <= levels, lies inside
-// the shape, off its surface by a spacing, and farther than its own edge from the box around
+// the shape, off its surface by a spacing, and farther than its own edge from the region
 // `fine`, one point stands for the cube (docs/mpm.md, "Coarsened seeding"). The points' volumes
 // add up to those of seed()'s, and the surface points are seed()'s.
 SeededPoints seed_coarsened(const case_file::Shape& shape, const Lattice& lattice, int levels,

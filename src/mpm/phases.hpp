@@ -87,7 +87,11 @@ void map_points_to_grid(State& s) {
         node.momentum[d] += w * c.mv[d];
         node.force[d] += f[d];
       }
-      // (One word per node: a byte-wide flag here would alias every array of the loop.)
+      // A body reaches the nodes where its points weigh: GIMP's three-node support holds a node
+      // of zero weight (and gradient) on the side away from the point, which adds nothing, and
+      // counting it would widen every contact band by a node layer. (One word per node: a
+      // byte-wide flag here would alias every array of the loop.)
+      if (w == 0.0) return;
       const std::int32_t seen = g.reached_by[n];
       if (seen == GridFields::kNoBody)
         g.reached_by[n] = b;
@@ -123,7 +127,7 @@ void map_bodies_to_contact_nodes(State& s) {
     const int b = s.points.body[p];
     st.for_each(s.layout, [&](std::size_t n, double w, double gx, double gy, double gz) {
       const std::int32_t slot = s.grid.contact_slot[n];
-      if (slot < 0) return;
+      if (slot < 0 || w == 0.0) return;  // (a body has an entry only where it weighs)
       const int entry = cn.entry(slot, b);
       if (entry < 0) return;  // one body too many: raised below
       const std::size_t e = ContactNodes::flat(slot, entry);
@@ -480,10 +484,11 @@ void update_point_velocities_and_remap(State& s) {
     st.for_each(s.layout, [&](std::size_t n, double w, double, double, double) {
       const double wm = w * m;
       for (int d = 0; d < 3; ++d) g.sums[n].momentum[d] += wm * v_new[d];
-      if (!near) return;
+      if (!near || w == 0.0) return;
       const std::int32_t slot = g.contact_slot[n];
       if (slot < 0) return;
-      // Every point near a contact node got its entry in map_bodies_to_contact_nodes.
+      // Where it weighs, a point near a contact node got its entry in
+      // map_bodies_to_contact_nodes.
       const std::size_t e = ContactNodes::flat(slot, cn.find(slot, b));
       for (int d = 0; d < 3; ++d) cn.momentum[d][e] += wm * v_new[d];
     });

@@ -24,10 +24,11 @@ namespace {
 void check_point(State& s, std::size_t p) {
   const Points& P = s.points;
   const char* cause = nullptr;
-  for (int d = 0; d < 3 && cause == nullptr; ++d)
-    if (!std::isfinite(P.position[d][p]) || !std::isfinite(P.velocity[d][p]) ||
-        !std::isfinite(P.stress[d][p]))
-      cause = "non-finite position, velocity or stress";
+  bool finite = true;
+  for (int d = 0; d < 3; ++d)
+    finite = finite && std::isfinite(P.position[d][p]) && std::isfinite(P.velocity[d][p]);
+  for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(P.stress[c][p]);
+  if (!finite) cause = "non-finite position, velocity or stress";
   // (Before the domain test, whose lower r bound is the axis.)
   if (s.layout.axisymmetric && cause == nullptr && P.position[0][p] <= 0.0)
     cause = "crossed the axis r = 0";
