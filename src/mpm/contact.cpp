@@ -249,61 +249,100 @@ Vector3d cohesive_bond_force(ContactNodes& c, std::size_t k, const ContactRule& 
   return dp;
 }
 
+// Sweeps over the pairs of a node that three or more bodies share, at most (resolve_contact).
+constexpr int kMaxSweeps = 100;
+// A sweep whose largest correction is below this share of the node's momentum ends them.
+constexpr double kSweepTolerance = 1e-12;
+
+// One pair's correction at its node (resolve_contact). On the first sweep it decides the pair's
+// contact and bond (pair_touching, pair_bond_forms); later sweeps keep those decisions and
+// correct again only what the other pairs' corrections undid: a bonded pair's common velocity,
+// a touching pair's approach along its normal. A cohesive bond (the debonding law) acts on the
+// first sweep only, so that its traction limit holds. Returns |dp|.
+double resolve_pair(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
+                    std::vector<std::array<double, 3>>& impulse, std::int32_t slot, int e1, int e2,
+                    bool first_sweep) {
+  const std::size_t k = ContactNodes::pair(slot, e1, e2);
+  if (c.pair_master[k] < 0) return 0.0;
+  const int em = c.pair_master[k], es = em == e1 ? e2 : e1;
+  const std::size_t fm = ContactNodes::flat(slot, em), fs = ContactNodes::flat(slot, es);
+  const int bm = c.body(slot, em), bs = c.body(slot, es);
+  const double mm = c.mass[fm], ms = c.mass[fs];
+  const Vector3d n = load(c.pair_normal, k);
+  const Vector3d pm = load(c.momentum, fm), ps = load(c.momentum, fs);
+  // Eq 3.29: the bodies approach when (m_s p_m - m_m p_s) . n > 0.
+  const bool approaching = (ms * pm - mm * ps).dot(n) > 0.0;
+  // The gap check: the surfaces meet by the end of the step, moving at the nodal velocities.
+  const bool touching =
+      rule.gap_check
+          ? c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) <= 0.0
+          : approaching;
+  if (first_sweep) {
+    c.pair_touching[k] = touching;
+    c.pair_bond_forms[k] =
+        rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2, rule.nodal_average));
+  }
+  const bool bonded = c.pair_bond_forms[k] || (rule.bonding && bond_holds(c.pair_bonded_sides[k]));
+  if (!bonded && !(approaching && touching)) return 0.0;
+  // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
+  const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
+  const double normal = stick.dot(n);
+  // (A body with next to no mass at the node, below the floor, has no velocity there to
+  // open the bond with: its share of the bond passes elsewhere.)
+  const bool cohesive =
+      bonded && rule.debond.enabled && c.bond_area[k] > 0.0 && std::min(mm, ms) > rule.mass_floor;
+  if (cohesive && !first_sweep) return 0.0;
+  Vector3d dp = cohesive ? cohesive_bond_force(c, k, rule, dt, stick, n, pm, ps, mm, ms)
+                : bonded ? stick
+                         : Vector3d(normal * n);
+  if (!bonded && rule.friction > 0.0) {
+    const Vector3d tangential = stick - dp;
+    const double t = tangential.norm(), limit = rule.friction * std::abs(normal);
+    dp += t > limit ? tangential * (limit / t) : tangential;
+  }
+  add_to(c.momentum, fm, dp);
+  add_to(c.momentum, fs, -dp);
+  add_to(c.force, fm, dp / dt);
+  add_to(c.force, fs, -dp / dt);
+  add_to(c.correction, fm, dp);
+  add_to(c.correction, fs, -dp);
+  for (int d = 0; d < 3; ++d) {
+    impulse[bm * bodies + bs][d] += dp[d];
+    impulse[bs * bodies + bm][d] -= dp[d];
+  }
+  return dp.norm();
+}
+
+// The sum of |p| over the bodies at a node: the scale of its corrections.
+double momentum_scale(const ContactNodes& c, std::int32_t slot) {
+  double scale = 0.0;
+  for (int e = 0; e < c.body_count(slot); ++e)
+    scale += load(c.momentum, ContactNodes::flat(slot, e)).norm();
+  return scale;
+}
+
 }  // namespace
 
 void resolve_contact(ContactNodes& c, const ContactRule& rule, double dt, int bodies,
                      std::vector<std::array<double, 3>>& impulse) {
   for (std::size_t s = 0; s < c.size(); ++s) {
     const auto slot = static_cast<std::int32_t>(s);
-    for (int e1 = 0; e1 < c.body_count(slot); ++e1)
-      for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2) {
-        const std::size_t k = ContactNodes::pair(slot, e1, e2);
-        if (c.pair_master[k] < 0) continue;
-        const int em = c.pair_master[k], es = em == e1 ? e2 : e1;
-        const std::size_t fm = ContactNodes::flat(slot, em), fs = ContactNodes::flat(slot, es);
-        const int bm = c.body(slot, em), bs = c.body(slot, es);
-        const double mm = c.mass[fm], ms = c.mass[fs];
-        const Vector3d n = load(c.pair_normal, k);
-        const Vector3d pm = load(c.momentum, fm), ps = load(c.momentum, fs);
-        // Eq 3.29: the bodies approach when (m_s p_m - m_m p_s) . n > 0.
-        const bool approaching = (ms * pm - mm * ps).dot(n) > 0.0;
-        // The gap check: the surfaces meet by the end of the step, moving at the nodal velocities.
-        const bool touching =
-            rule.gap_check
-                ? c.other_surface[k] - c.master_surface[k] + dt * (ps / ms - pm / mm).dot(n) <= 0.0
-                : approaching;
-        c.pair_touching[k] = touching;
-        const bool forms =
-            rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2, rule.nodal_average));
-        c.pair_bond_forms[k] = forms;
-        const bool bonded = forms || (rule.bonding && bond_holds(c.pair_bonded_sides[k]));
-        if (!bonded && !(approaching && touching)) continue;
-        // Eq 3.31 times dt: the momentum change that gives both bodies the common velocity.
-        const Vector3d stick = (mm * ps - ms * pm) / (mm + ms);
-        const double normal = stick.dot(n);
-        // (A body with next to no mass at the node, below the floor, has no velocity there to
-        // open the bond with: its share of the bond passes elsewhere.)
-        const bool cohesive = bonded && rule.debond.enabled && c.bond_area[k] > 0.0 &&
-                              std::min(mm, ms) > rule.mass_floor;
-        Vector3d dp = cohesive ? cohesive_bond_force(c, k, rule, dt, stick, n, pm, ps, mm, ms)
-                      : bonded ? stick
-                               : Vector3d(normal * n);
-        if (!bonded && rule.friction > 0.0) {
-          const Vector3d tangential = stick - dp;
-          const double t = tangential.norm(), limit = rule.friction * std::abs(normal);
-          dp += t > limit ? tangential * (limit / t) : tangential;
-        }
-        add_to(c.momentum, fm, dp);
-        add_to(c.momentum, fs, -dp);
-        add_to(c.force, fm, dp / dt);
-        add_to(c.force, fs, -dp / dt);
-        add_to(c.correction, fm, dp);
-        add_to(c.correction, fs, -dp);
-        for (int d = 0; d < 3; ++d) {
-          impulse[bm * bodies + bs][d] += dp[d];
-          impulse[bs * bodies + bm][d] -= dp[d];
-        }
-      }
+    const int count = c.body_count(slot);
+    // Where three or more bodies meet, a pair's correction changes a body another pair has
+    // already corrected: one sweep left bonded bodies at different velocities and touching ones
+    // approaching, and a junction of three bodies' contacts squeezed its material step after
+    // step (docs/validation/multi-particle.md). So the sweeps repeat, each pair projecting the
+    // bodies onto its own condition in turn (projected Gauss-Seidel), until the corrections
+    // vanish. Two bodies need one sweep: it meets their one condition exactly.
+    const double tolerance = count > 2 ? kSweepTolerance * momentum_scale(c, slot) : 0.0;
+    for (int sweep = 0; sweep < (count > 2 ? kMaxSweeps : 1); ++sweep) {
+      double largest = 0.0;
+      for (int e1 = 0; e1 < count; ++e1)
+        for (int e2 = e1 + 1; e2 < count; ++e2)
+          largest = std::max(largest,
+                             resolve_pair(c, rule, dt, bodies, impulse, slot, e1, e2, sweep == 0));
+      if (largest <= tolerance) break;
+    }
   }
 }
 

@@ -1,6 +1,8 @@
 // The contact normal rules with three bodies at one node (mpm/contact.hpp): every rule's
 // corrections conserve the node's momentum, and `average-gradient` gives each pair the same
-// normal and the same corrections whichever way the bodies are numbered.
+// normal and the same corrections whichever way the bodies are numbered. The pairs' corrections
+// repeat until they agree: three bonded bodies leave with one velocity, and no touching pair is
+// left approaching.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -28,9 +30,9 @@ const std::array<Body, 3> kBodies{{
     {4.0, Vector3d(0.0, 0.0, 0.0), Vector3d(0.1, 0.0, 2.0)},      // substrate
 }};
 
-// Runs the rule with the bodies numbered by `order` (order[k]: the number of body k) and
-// returns each body's momentum after the corrections, by body (not by number).
-std::array<Vector3d, 3> corrected(case_file::ContactNormal normal, std::array<int, 3> order) {
+// The node after the rule's normals and corrections, with the bodies numbered by `order`
+// (order[k]: the number of body k), each pair bonded on both sides if `bonded`. Its one slot is 0.
+ContactNodes resolved(case_file::ContactNormal normal, std::array<int, 3> order, bool bonded) {
   ContactNodes c;
   const std::int32_t slot = c.add(0);
   for (int k = 0; k < 3; ++k) {
@@ -51,11 +53,25 @@ std::array<Vector3d, 3> corrected(case_file::ContactNormal normal, std::array<in
   result.master.assign(9, 0);
   const std::vector<std::uint8_t> held(1, 0);
   choose_contact_normals(c, rule, held, 3, result);
+  if (bonded) {  // bonds kept on both sides of every pair (ContactNodes::pair_bonded_sides)
+    rule.bonding = true;
+    for (int e1 = 0; e1 < 3; ++e1)
+      for (int e2 = e1 + 1; e2 < 3; ++e2)
+        c.pair_bonded_sides[ContactNodes::pair(slot, e1, e2)] =
+            ContactNodes::kLowerSide | ContactNodes::kHigherSide;
+  }
   std::vector<std::array<double, 3>> impulse(9, {0.0, 0.0, 0.0});
   resolve_contact(c, rule, 1e-9, 3, impulse);
+  return c;
+}
+
+// Each body's momentum after the corrections, by body (not by number).
+std::array<Vector3d, 3> corrected(case_file::ContactNormal normal, std::array<int, 3> order,
+                                  bool bonded = false) {
+  const ContactNodes c = resolved(normal, order, bonded);
   std::array<Vector3d, 3> out;
   for (int k = 0; k < 3; ++k) {
-    const std::size_t f = ContactNodes::flat(slot, c.find(slot, order[k]));
+    const std::size_t f = ContactNodes::flat(0, c.find(0, order[k]));
     out[k] = Vector3d(c.momentum[0][f], c.momentum[1][f], c.momentum[2][f]);
   }
   return out;
@@ -88,6 +104,50 @@ TEST(ContactRules, TheAverageGradientDoesNotDependOnTheBodiesNumbering) {
   const std::array<Vector3d, 3> a = corrected(case_file::ContactNormal::HighestId, {0, 1, 2});
   const std::array<Vector3d, 3> b = corrected(case_file::ContactNormal::HighestId, {2, 0, 1});
   EXPECT_GT((a[2] - b[2]).norm(), 1e-3);
+}
+
+// One sweep of pairwise sticks left the three at three velocities (the last pair's correction
+// moved a body the first had stuck), and the junction's material was squeezed step after step.
+TEST(ContactRules, ThreeBondedBodiesLeaveTheNodeWithOneVelocity) {
+  double mass = 0.0;
+  Vector3d before = Vector3d::Zero();
+  for (const Body& b : kBodies) {
+    mass += b.mass;
+    before += b.momentum;
+  }
+  const Vector3d common = before / mass;  // the node's centre-of-mass velocity
+  for (const auto normal :
+       {case_file::ContactNormal::AverageGradient, case_file::ContactNormal::HighestId}) {
+    const std::array<Vector3d, 3> after = corrected(normal, {0, 1, 2}, /*bonded=*/true);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LT((after[k] / kBodies[k].mass - common).norm(), 1e-11 * common.norm())
+          << "body " << k << ", rule " << static_cast<int>(normal);
+    EXPECT_LT((after[0] + after[1] + after[2] - before).norm(), 1e-14);
+  }
+}
+
+// Frictionless: after the corrections no pair approaches along its normal (eq 3.29), to
+// rounding.
+TEST(ContactRules, NoPairOfThreeBodiesIsLeftApproaching) {
+  for (const auto normal :
+       {case_file::ContactNormal::AverageGradient, case_file::ContactNormal::HighestId,
+        case_file::ContactNormal::MaxGradient}) {
+    const ContactNodes c = resolved(normal, {0, 1, 2}, /*bonded=*/false);
+    const std::int32_t slot = 0;
+    for (int e1 = 0; e1 < 3; ++e1)
+      for (int e2 = e1 + 1; e2 < 3; ++e2) {
+        const std::size_t k = ContactNodes::pair(slot, e1, e2);
+        ASSERT_GE(c.pair_master[k], 0);
+        const int em = c.pair_master[k], es = em == e1 ? e2 : e1;
+        const std::size_t fm = ContactNodes::flat(slot, em), fs = ContactNodes::flat(slot, es);
+        const Vector3d n(c.pair_normal[0][k], c.pair_normal[1][k], c.pair_normal[2][k]);
+        const Vector3d vm(c.momentum[0][fm], c.momentum[1][fm], c.momentum[2][fm]);
+        const Vector3d vs(c.momentum[0][fs], c.momentum[1][fs], c.momentum[2][fs]);
+        // (v_m - v_s) . n > 0 approaches: at most rounding left.
+        EXPECT_LT((vm / c.mass[fm] - vs / c.mass[fs]).dot(n), 1e-12)
+            << "pair " << e1 << "-" << e2 << ", rule " << static_cast<int>(normal);
+      }
+  }
 }
 
 }  // namespace
