@@ -56,6 +56,16 @@ void print_case_summary(const case_file::Case& c, std::ostream& out) {
   out << fmt::format("case '{}': {}, {} bodies, end time {:.4g} ns\n", c.name,
                      axisymmetric ? "axisymmetric" : "3D", c.bodies.size(),
                      c.solver.end_time * 1e9);
+  // A run whose moving body is undecided at the end time goes on (run/step_rule.hpp), which a
+  // short end time would not lead one to expect (docs/bonding.md, "Verdict").
+  const bool has_verdict = std::any_of(c.bodies.begin(), c.bodies.end(),
+                                       [](const auto& b) { return b.velocity.z() != 0.0; });
+  if (has_verdict && c.metrics.verdict_extensions > 0)
+    out << fmt::format(
+        "  verdict over the last {:.4g} ns; while a body is undecided the run goes on by up to "
+        "{} x {:.4g} ns (metrics.verdict_extensions)\n",
+        c.metrics.verdict_window * 1e9, c.metrics.verdict_extensions,
+        c.metrics.verdict_window * 1e9);
   for (const auto& b : c.bodies) {
     // A coarsened body has fewer: the estimate counts the uniform lattice.
     out << fmt::format(

@@ -59,6 +59,15 @@ TEST(Cli, CheckAcceptsTheDefaultExample) {
   EXPECT_NE(r.output.find("OK"), std::string::npos) << r.output;
 }
 
+TEST(Cli, CaseSummarySaysAnUndecidedRunGoesOn) {
+  const std::string line = "while a body is undecided the run goes on by up to 2 x 20 ns";
+  const auto r = run_coldspray("check '" + kExample + "'");
+  EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
+  const auto off = run_coldspray("check '" + kExample + "' --set metrics.verdict_extensions=0");
+  EXPECT_EQ(off.status, 0) << off.output;
+  EXPECT_EQ(off.output.find("the run goes on"), std::string::npos) << off.output;
+}
+
 TEST(Cli, CheckNamesFileLineAndKeyOfAnUnknownKey) {
   const auto r = run_coldspray("check '" + kData + "/cli/unknown-key.yaml'");
   EXPECT_EQ(r.status, 2) << r.output;
