@@ -137,7 +137,10 @@ struct Contact {
   std::optional<double> softening;      // m
   ContactNormal normal = ContactNormal::MaxGradient;
   std::string normal_body;  // with ContactNormal::Body
-  double friction = 0.0;    // Coulomb coefficient; 0 = frictionless
+  // With ContactNormal::Body, the rule at pairs of other bodies (not Body): the thesis' MVG, or
+  // for many particles on a substrate the average gradient between particles.
+  ContactNormal other_pairs_normal = ContactNormal::MaxGradient;
+  double friction = 0.0;  // Coulomb coefficient; 0 = frictionless
   // Also require the bodies' surfaces, from their points' extents, to meet at the node.
   bool gap_check = true;
 

@@ -54,6 +54,11 @@ inline constexpr Names<BondingModel, 3> kBondingModelNames{{{{"none", BondingMod
 inline constexpr Names<DebondLaw, 2> kDebondLawNames{
     {{{"none", DebondLaw::None}, {"cohesive", DebondLaw::Cohesive}}}};
 
+inline constexpr Names<ContactNormal, 3> kOtherPairsNormalNames{
+    {{{"max-gradient", ContactNormal::MaxGradient},
+      {"average-gradient", ContactNormal::AverageGradient},
+      {"highest-id", ContactNormal::HighestId}}}};
+
 inline constexpr Names<ContactModel, 3> kContactModelNames{
     {{{"repulsive", ContactModel::Repulsive},
       {"lennard-jones", ContactModel::LennardJones},
@@ -169,6 +174,7 @@ void fields(IO& io, Contact& c) {
               Range{0.0, 1.0, true, true});
   io.quantity("softening", c.softening, units::kDimensionless, kOptional, kPositive);
   io.scalar("normal", c, ContactNormalText{}, kOptional);
+  io.scalar("other_pairs_normal", c.other_pairs_normal, kOtherPairsNormalNames, kOptional);
   io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
   io.scalar("gap_check", c.gap_check, Flag{}, kOptional);
 }

@@ -13,7 +13,12 @@ namespace coldspray::case_file {
 namespace {
 
 void check_contact_body(const Document& doc, const Case& c) {
-  if (c.contact.normal != ContactNormal::Body) return;
+  if (c.contact.normal != ContactNormal::Body) {
+    if (c.contact.other_pairs_normal != ContactNormal::MaxGradient)
+      fail_at(doc, {"contact", "other_pairs_normal"},
+              "applies with contact.normal: body:NAME only (the pairs without that body)");
+    return;
+  }
   std::vector<std::string_view> names;
   for (const Body& b : c.bodies) {
     if (b.name == c.contact.normal_body) return;

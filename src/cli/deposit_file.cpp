@@ -24,8 +24,11 @@ using case_file::kRequired;
 
 constexpr std::array<std::string_view, 3> kDistributions{"fixed", "normal", "log-normal"};
 constexpr std::array<std::string_view, 3> kBondingModels{"none", "strain", "energy"};
-constexpr std::array<std::string_view, 3> kContactNormals{"highest-id", "average-gradient",
-                                                          "max-gradient"};
+// `substrate`: the substrate's normal at particle-substrate pairs (the rule the bonding model is
+// calibrated with), the average gradient between particles (case keys contact.normal and
+// contact.other_pairs_normal); the others are contact.normal's own.
+constexpr std::array<std::string_view, 4> kContactNormals{"substrate", "highest-id",
+                                                          "average-gradient", "max-gradient"};
 constexpr case_file::Range kAtLeastOne{1.0, case_file::kInfinity, false, false};
 
 struct FixedSizes {
@@ -115,7 +118,7 @@ struct FileEntry {
   double arrival_window = 0.0;
   double settle_time = 80e-9;  // the thesis reads its impacts 80 ns after contact (§5.2.2)
   std::optional<double> voxel;
-  std::string bonding = "energy", contact_normal = "average-gradient";
+  std::string bonding = "energy", contact_normal = "substrate";
 };
 template <class IO>
 void fields(IO& io, FileEntry& f) {

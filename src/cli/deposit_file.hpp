@@ -23,7 +23,7 @@ struct DepositFile {
   double settle_time = 80e-9;                // s, run on after the last arrival
   double voxel = 0.0;                        // the porosity's voxel edge, m (default: spacing)
   std::string bonding = "energy";
-  std::string contact_normal = "average-gradient";
+  std::string contact_normal = "substrate";  // or a contact.normal (deposit_file.cpp)
   studies::DepositPlan plan;
   // Where values were given, "FILE:LINE:COLUMN", for errors found after reading (placement)
   // and for the generated case's keys.

@@ -119,13 +119,20 @@ constexpr double kMasterSwitchRatio = 1.1;
 // through near-ties: a normal that flips between the bodies from node to node or from step to
 // step makes the contact dissipate (two elastic spheres rebounded at 41.5 of 50 m/s with a
 // node-by-node choice, at 33 m/s with a step-by-step one, at 49.1 m/s with a fixed master).
+// The rule at the pair of bodies b1, b2: `body:NAME` is the named body's normal where it is one of
+// the two, rule.other_pairs elsewhere.
+case_file::ContactNormal pair_rule(const ContactRule& rule, int b1, int b2) {
+  if (rule.normal != case_file::ContactNormal::Body || b1 == rule.normal_body ||
+      b2 == rule.normal_body)
+    return rule.normal;
+  return rule.other_pairs;
+}
+
 bool first_is_master(const ContactRule& rule, const std::vector<double>& weight, int bodies, int b1,
                      int b2, std::vector<std::uint8_t>& master) {
-  switch (rule.normal) {
+  switch (pair_rule(rule, b1, b2)) {
     case case_file::ContactNormal::Body:
-      if (b1 == rule.normal_body) return true;
-      if (b2 == rule.normal_body) return false;
-      break;  // neither is the named body: fall back to the maximum volume gradient
+      return b1 == rule.normal_body;
     case case_file::ContactNormal::HighestId:
       return b1 > b2;
     case case_file::ContactNormal::AverageGradient:
@@ -159,7 +166,9 @@ bool first_is_master(const ContactRule& rule, const std::vector<double>& weight,
 Vector3d pair_gradient(const ContactNodes& c, const ContactRule& rule, std::int32_t slot,
                        int master, int other) {
   const Vector3d g_master = load(c.mass_gradient, ContactNodes::flat(slot, master));
-  if (rule.normal != case_file::ContactNormal::AverageGradient) return g_master;
+  if (pair_rule(rule, c.body(slot, master), c.body(slot, other)) !=
+      case_file::ContactNormal::AverageGradient)
+    return g_master;
   const Vector3d g_other = load(c.mass_gradient, ContactNodes::flat(slot, other));
   return g_master / rule.reference_density[c.body(slot, master)] -
          g_other / rule.reference_density[c.body(slot, other)];

@@ -117,7 +117,9 @@ class ContactNodes {
 // How the contact normal is chosen at a node, and friction.
 struct ContactRule {
   case_file::ContactNormal normal = case_file::ContactNormal::MaxGradient;
-  int normal_body = -1;                   // with ContactNormal::Body
+  int normal_body = -1;  // with ContactNormal::Body
+  // With ContactNormal::Body, the rule at pairs without normal_body (case_file::Contact).
+  case_file::ContactNormal other_pairs = case_file::ContactNormal::MaxGradient;
   std::vector<double> reference_density;  // per body: MVG compares volume gradients
   double friction = 0.0;
   // Touch only where the surfaces meet (ContactNodes::master_surface, other_surface); without,

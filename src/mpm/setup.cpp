@@ -222,6 +222,7 @@ State build_state(const case_file::Case& c) {
   s.stress_shares.prepare(omp_get_max_threads(), stress_batch_count(s));
 
   s.contact_rule.normal = c.contact.normal;
+  s.contact_rule.other_pairs = c.contact.other_pairs_normal;
   s.contact_rule.friction = c.contact.friction;
   s.contact_rule.gap_check = c.contact.gap_check;
   s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid->cell_size);

@@ -68,6 +68,25 @@ TEST(SolverSections, TheBondingModelIsTheMpms) {
                "bonding.model", "must be none with solver.method peridynamics");
 }
 
+// contact.other_pairs_normal: the rule at pairs without the body contact.normal names; with
+// another normal it has no pairs to act on (exit 2 naming it).
+TEST(SolverSections, OtherPairsNormalGoesWithABodysNormal) {
+  const Case c = load_case(
+      example("al-14um-810.yaml"),
+      {{"contact.normal", "body:substrate"}, {"contact.other_pairs_normal", "average-gradient"}});
+  EXPECT_EQ(c.contact.normal, ContactNormal::Body);
+  EXPECT_EQ(c.contact.other_pairs_normal, ContactNormal::AverageGradient);
+  EXPECT_EQ(load_case(example("al-14um-810.yaml")).contact.other_pairs_normal,
+            ContactNormal::MaxGradient);
+  expect_error("al-14um-810.yaml",
+               {{"contact.normal", "highest-id"}, {"contact.other_pairs_normal", "highest-id"}},
+               "contact.other_pairs_normal", "applies with contact.normal: body:NAME only");
+  expect_error(
+      "al-14um-810.yaml",
+      {{"contact.normal", "body:substrate"}, {"contact.other_pairs_normal", "body:particle"}},
+      "contact.other_pairs_normal", "max-gradient");
+}
+
 TEST(SolverSections, ContactModelOneIsPeridynamicsOnly) {
   expect_error("al-14um-810.yaml", {{"contact.model", "lennard-jones"}}, "contact.model",
                "is peridynamics only");

@@ -119,8 +119,18 @@ TEST(Deposit, TheSeedFixesTheCase) {
   EXPECT_NE(a, replaced(read_text(dir / "c.yaml"), "other.yaml", "small.yaml"));
   EXPECT_TRUE(has({0, a}, "name: p3")) << a;
   EXPECT_TRUE(has({0, a}, "name: substrate")) << a;
-  // The generated case runs as a case file.
+  // By default the substrate's normal at particle-substrate pairs and the average gradient
+  // between particles; contact_normal names another rule for all pairs.
+  EXPECT_TRUE(has({0, a}, "normal: body:substrate")) << a;
+  EXPECT_TRUE(has({0, a}, "other_pairs_normal: average-gradient")) << a;
+  write(dir, "highest.yaml", kSmall + "contact_normal: highest-id\n");
+  ASSERT_EQ(run_coldspray("deposit highest.yaml --write-case h.yaml", dir).status, 0);
+  const std::string h = read_text(dir / "h.yaml");
+  EXPECT_TRUE(has({0, h}, "normal: highest-id")) << h;
+  EXPECT_FALSE(has({0, h}, "other_pairs_normal")) << h;
+  // The generated cases run as case files.
   EXPECT_EQ(run_coldspray("check a.yaml", dir).status, 0);
+  EXPECT_EQ(run_coldspray("check h.yaml", dir).status, 0);
 }
 
 struct BadFile {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -31,8 +32,11 @@ const std::array<Body, 3> kBodies{{
 }};
 
 // The node after the rule's normals and corrections, with the bodies numbered by `order`
-// (order[k]: the number of body k), each pair bonded on both sides if `bonded`. Its one slot is 0.
-ContactNodes resolved(case_file::ContactNormal normal, std::array<int, 3> order, bool bonded) {
+// (order[k]: the number of body k), each pair bonded on both sides if `bonded`; `other_pairs` is
+// the rule between the particles under body:substrate. Its one slot is 0.
+ContactNodes resolved(
+    case_file::ContactNormal normal, std::array<int, 3> order, bool bonded,
+    case_file::ContactNormal other_pairs = case_file::ContactNormal::MaxGradient) {
   ContactNodes c;
   const std::int32_t slot = c.add(0);
   for (int k = 0; k < 3; ++k) {
@@ -46,6 +50,7 @@ ContactNodes resolved(case_file::ContactNormal normal, std::array<int, 3> order,
   ContactRule rule;
   rule.normal = normal;
   rule.normal_body = order[2];  // body:substrate
+  rule.other_pairs = other_pairs;
   rule.reference_density = {2700.0, 2700.0, 2700.0};
   rule.gap_check = false;  // the approach test alone: the surfaces are not gathered here
   ContactResult result;
@@ -66,9 +71,10 @@ ContactNodes resolved(case_file::ContactNormal normal, std::array<int, 3> order,
 }
 
 // Each body's momentum after the corrections, by body (not by number).
-std::array<Vector3d, 3> corrected(case_file::ContactNormal normal, std::array<int, 3> order,
-                                  bool bonded = false) {
-  const ContactNodes c = resolved(normal, order, bonded);
+std::array<Vector3d, 3> corrected(
+    case_file::ContactNormal normal, std::array<int, 3> order, bool bonded = false,
+    case_file::ContactNormal other_pairs = case_file::ContactNormal::MaxGradient) {
+  const ContactNodes c = resolved(normal, order, bonded, other_pairs);
   std::array<Vector3d, 3> out;
   for (int k = 0; k < 3; ++k) {
     const std::size_t f = ContactNodes::flat(0, c.find(0, order[k]));
@@ -83,11 +89,51 @@ TEST(ContactRules, EveryRuleConservesMomentumWithThreeBodiesAtANode) {
   for (const auto normal :
        {case_file::ContactNormal::MaxGradient, case_file::ContactNormal::AverageGradient,
         case_file::ContactNormal::HighestId, case_file::ContactNormal::Body}) {
-    const std::array<Vector3d, 3> after = corrected(normal, {0, 1, 2});
-    const Vector3d total = after[0] + after[1] + after[2];
-    EXPECT_LT((total - before).norm(), 1e-15) << static_cast<int>(normal);
-    // The particles were driven into the substrate: it takes momentum downwards.
-    EXPECT_LT(after[2][2], -0.1) << static_cast<int>(normal);
+    for (const auto other_pairs :
+         {case_file::ContactNormal::MaxGradient, case_file::ContactNormal::AverageGradient}) {
+      if (normal != case_file::ContactNormal::Body &&
+          other_pairs != case_file::ContactNormal::MaxGradient)
+        continue;  // other_pairs applies under body:NAME only
+      const std::array<Vector3d, 3> after = corrected(normal, {0, 1, 2}, false, other_pairs);
+      const Vector3d total = after[0] + after[1] + after[2];
+      EXPECT_LT((total - before).norm(), 1e-15) << static_cast<int>(normal);
+      // The particles were driven into the substrate: it takes momentum downwards.
+      EXPECT_LT(after[2][2], -0.1) << static_cast<int>(normal);
+    }
+  }
+}
+
+// The pair's unit normal at the node's one slot, between the entries of bodies b1 and b2.
+Vector3d pair_normal(const ContactNodes& c, int b1, int b2) {
+  const int e1 = c.find(0, b1), e2 = c.find(0, b2);
+  const std::size_t k = ContactNodes::pair(0, std::min(e1, e2), std::max(e1, e2));
+  return Vector3d(c.pair_normal[0][k], c.pair_normal[1][k], c.pair_normal[2][k]);
+}
+
+// body:substrate with the average gradient between other pairs: each particle meets the
+// substrate along the substrate's own normal, as under body:substrate alone, and the particles
+// meet each other along their average gradient, as under average-gradient, whichever way the
+// particles are numbered.
+TEST(ContactRules, TheSubstratesNormalWithTheAverageGradientBetweenParticles) {
+  using case_file::ContactNormal;
+  const ContactNodes body = resolved(ContactNormal::Body, {0, 1, 2}, false);
+  const ContactNodes average = resolved(ContactNormal::AverageGradient, {0, 1, 2}, false);
+  for (const std::array<int, 3> order :
+       {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{1, 0, 2}}) {
+    const ContactNodes both =
+        resolved(ContactNormal::Body, order, false, ContactNormal::AverageGradient);
+    const int left = order[0], right = order[1], substrate = order[2];
+    const Vector3d substrates = Vector3d(0.1, 0.0, 2.0).normalized();  // kBodies[2].gradient
+    for (const int particle : {left, right}) {
+      EXPECT_LT((pair_normal(both, particle, substrate) - substrates).norm(), 1e-15);
+      EXPECT_LT((pair_normal(body, particle == left ? 0 : 1, 2) - substrates).norm(), 1e-15);
+    }
+    // Up to orientation (the master only orients it): the same line as the average gradient's.
+    const Vector3d n = pair_normal(both, left, right), a = pair_normal(average, 0, 1);
+    EXPECT_LT(std::min((n - a).norm(), (n + a).norm()), 1e-15);
+    // Not the max-gradient's normal there, which body:substrate alone gives the particles.
+    EXPECT_GT(std::min((n - pair_normal(body, 0, 1)).norm(), (n + pair_normal(body, 0, 1)).norm()),
+              1e-3);
   }
 }
 
