@@ -110,15 +110,6 @@ void weigh_gradients(const ContactNodes& c, const ContactRule& rule, int bodies,
   }
 }
 
-// MVG hands the normal to the other body of a pair only when its volume gradient exceeds the
-// master's by this factor, so that near-ties do not flip the normal from step to step.
-constexpr double kMasterSwitchRatio = 1.1;
-
-// Whether body b1 supplies the contact normal against b2 (thesis §3.5.4). MVG takes the body
-// with the larger volume gradient over the pair's shared nodes, not node by node, and keeps it
-// through near-ties: a normal that flips between the bodies from node to node or from step to
-// step makes the contact dissipate (two elastic spheres rebounded at 41.5 of 50 m/s with a
-// node-by-node choice, at 33 m/s with a step-by-step one, at 49.1 m/s with a fixed master).
 // The rule at the pair of bodies b1, b2: `body:NAME` is the named body's normal where it is one of
 // the two, rule.other_pairs elsewhere.
 case_file::ContactNormal pair_rule(const ContactRule& rule, int b1, int b2) {
@@ -128,6 +119,15 @@ case_file::ContactNormal pair_rule(const ContactRule& rule, int b1, int b2) {
   return rule.other_pairs;
 }
 
+// MVG hands the normal to the other body of a pair only when its volume gradient exceeds the
+// master's by this factor, so that near-ties do not flip the normal from step to step.
+constexpr double kMasterSwitchRatio = 1.1;
+
+// Whether body b1 supplies the contact normal against b2 (thesis §3.5.4). MVG takes the body
+// with the larger volume gradient over the pair's shared nodes, not node by node, and keeps it
+// through near-ties: a normal that flips between the bodies from node to node or from step to
+// step makes the contact dissipate (two elastic spheres rebounded at 41.5 of 50 m/s with a
+// node-by-node choice, at 33 m/s with a step-by-step one, at 49.1 m/s with a fixed master).
 bool first_is_master(const ContactRule& rule, const std::vector<double>& weight, int bodies, int b1,
                      int b2, std::vector<std::uint8_t>& master) {
   switch (pair_rule(rule, b1, b2)) {
