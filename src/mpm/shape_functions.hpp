@@ -8,14 +8,35 @@
 
 namespace coldspray::mpm {
 
-// Weights of the nodes base, base+1, ... along one axis, and their derivatives d/dx. Left
-// uninitialised: every evaluate() sets all of them, once per point and phase.
+// Weights of the nodes base, ..., base + count - 1 along one axis, and their derivatives d/dx.
+// Left uninitialised: every evaluate() sets all of them, once per point and phase.
 template <int Support>
 struct Weights1D {
   int base;
+  int count;  // the nodes the point reaches: Support, less the end nodes of zero weight
   double w[Support];
   double dw[Support];
 };
+
+// Drops the end nodes where both the weight and its derivative are zero: they add nothing to any
+// sum, and a loop over the point's nodes then skips them. A GIMP point reaches the nodes within
+// h + lp of it, so along an axis it reaches a third node only when it lies within lp of a face
+// of its cell: a lattice point of 4 per cell, or one deformed little, reaches 8 of the 27 nodes
+// in 3D (docs/mpm.md, "Shape functions").
+template <int Support>
+void drop_empty_end_nodes(Weights1D<Support>& out) {
+  auto empty = [&](int n) { return out.w[n] == 0.0 && out.dw[n] == 0.0; };
+  int first = 0, last = Support - 1;
+  while (first < last && empty(first)) ++first;
+  while (last > first && empty(last)) --last;
+  for (int n = 0; n < Support; ++n) {
+    const bool kept = n + first <= last;
+    out.w[n] = kept ? out.w[n + first] : 0.0;
+    out.dw[n] = kept ? out.dw[n + first] : 0.0;
+  }
+  out.base += first;
+  out.count = last - first + 1;
+}
 
 struct LinearShape {
   static constexpr int kSupport = 2;
@@ -28,6 +49,7 @@ struct LinearShape {
     out.w[1] = f;
     out.dw[0] = -inv_h;
     out.dw[1] = inv_h;
+    out.count = 2;  // (a hat's derivative is never zero at both ends)
   }
 };
 
@@ -58,6 +80,7 @@ struct GimpShape {
         out.dw[n] = 0.0;
       }
     }
+    drop_empty_end_nodes(out);
   }
 };
 

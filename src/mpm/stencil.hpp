@@ -15,7 +15,6 @@ template <class Shape, bool Axisymmetric>
 struct Stencil {
   static constexpr int S = Shape::kSupport;
   static constexpr int SY = Axisymmetric ? 1 : S;
-  static constexpr int kNodes = S * SY * S;
 
   Weights1D<S> wx, wy, wz;
 
@@ -32,6 +31,7 @@ struct Stencil {
       // stays bounded. (An uncut GIMP domain gives v_r(r -> 0) != 0 and a diverging hoop rate.)
       Shape::evaluate((x - g.origin[0]) * inv_h, std::min(a(0), x * inv_h), inv_h, wx);
       wy.base = 0;
+      wy.count = 1;
       for (int n = 0; n < S; ++n) wy.w[n] = wy.dw[n] = 0.0;
       wy.w[0] = 1.0;
     } else {
@@ -40,16 +40,17 @@ struct Stencil {
     }
   }
 
-  // Calls f(node, N, dN/dx, dN/dy, dN/dz) for every node of the support, in a fixed order.
+  // Calls f(node, N, dN/dx, dN/dy, dN/dz) for every node of the support the point reaches, in a
+  // fixed order.
   template <class F>
   void for_each(const GridLayout& g, F&& f) const {
-    for (int k = 0; k < S; ++k)
-      for (int j = 0; j < SY; ++j) {
+    for (int k = 0; k < wz.count; ++k)
+      for (int j = 0; j < wy.count; ++j) {
         const double wyz = wy.w[j] * wz.w[k];
         const double dy = wy.dw[j] * wz.w[k];
         const double dz = wy.w[j] * wz.dw[k];
         const std::size_t row = g.index(wx.base, wy.base + j, wz.base + k);
-        for (int i = 0; i < S; ++i)
+        for (int i = 0; i < wx.count; ++i)
           f(row + i, wx.w[i] * wyz, wx.dw[i] * wyz, wx.w[i] * dy, wx.w[i] * dz);
       }
   }
