@@ -2,7 +2,7 @@
 // what its comment says: the 14 um particle at 810 m/s on the thesis' 30 x 10 um cylinder, a 3D
 // quarter at 0.7/0.175 um, the substrate fine in a box of half-width 7 um and depth 3.5 um whose
 // corners reach past the contact's rim (8.4 um from the axis), the particle fine below z = 5 um,
-// both coarsened twice.
+// both coarsened twice; the time step fixed at 0.3 of the undeformed critical step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,6 +29,8 @@ TEST(Fast3dExample, IsTheThesisImpactWithTheDocumentedFineRegions) {
   EXPECT_NEAR(particle.spacing, 0.175e-6, 1e-15);
   EXPECT_EQ(c.grid->faces.at(GridFace::XMin), FaceCondition::Roller);
   EXPECT_EQ(c.grid->faces.at(GridFace::YMin), FaceCondition::Roller);
+  ASSERT_TRUE(c.solver.dt_scale);
+  EXPECT_DOUBLE_EQ(*c.solver.dt_scale, c.solver.cfl);  // the CFL rule's first step, held
 
   ASSERT_TRUE(substrate.coarsening);
   EXPECT_EQ(substrate.coarsening->levels, 2);
