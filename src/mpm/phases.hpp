@@ -87,10 +87,11 @@ void map_points_to_grid(State& s) {
         node.momentum[d] += w * c.mv[d];
         node.force[d] += f[d];
       }
-      // A body reaches the nodes where its points weigh: GIMP's three-node support holds a node
-      // of zero weight (and gradient) on the side away from the point, which adds nothing, and
-      // counting it would widen every contact band by a node layer. (One word per node: a
-      // byte-wide flag here would alias every array of the loop.)
+      // A body reaches the nodes where its points weigh: counting a node of zero weight would
+      // widen every contact band by a node layer. GIMP's stencils no longer hold such nodes
+      // (drop_empty_end_nodes); a linear hat does, with a non-zero gradient, when its point sits
+      // on a node. (One word per node: a byte-wide flag here would alias every array of the
+      // loop.)
       if (w == 0.0) return;
       const std::int32_t seen = g.reached_by[n];
       if (seen == GridFields::kNoBody)
