@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <stdexcept>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -184,18 +186,94 @@ class UnitExpression {
   std::size_t pos_ = 0;
 };
 
-// `number` times 10^shift, rounded once: the decimal exponent is shifted in the text.
-double scale_by_power_of_ten(std::string_view number, int shift, std::string_view whole) {
-  std::string mantissa(number);
-  int exponent = 0;
-  if (const std::size_t e = mantissa.find_first_of("eE"); e != std::string::npos) {
-    std::from_chars(mantissa.data() + e + 1, mantissa.data() + mantissa.size(), exponent);
-    mantissa.resize(e);
+// A number as written: [+|-] DIGITS [. DIGITS] [(e|E) [+|-] DIGITS], at least one digit before
+// the exponent. Every form std::to_chars, printf's %g/%e and people write ("1e+12", "1.5E-03",
+// "+3", ".5", "5.") is one; hexadecimal, inf and nan are not. Reading the syntax here, rather
+// than taking whatever prefix std::from_chars accepts, is what makes "1e+", "1e3.5" or "+-3" an
+// error instead of another number.
+struct WrittenNumber {
+  std::string mantissa;    // the sign ('-' only) and the digits with their point
+  long long exponent = 0;  // the written exponent, saturated at +-kMaxWrittenExponent
+  std::size_t length = 0;  // characters of the text the number spans
+};
+
+// Beyond this the value is 0 or out of range for any mantissa shorter than a gigabyte, and the
+// sum with a unit's shift (at most 1000, UnitExpression::combine) stays far inside an int.
+constexpr long long kMaxWrittenExponent = 1'000'000'000;
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+std::size_t digits_from(std::string_view text, std::size_t pos) {
+  std::size_t end = pos;
+  while (end < text.size() && is_digit(text[end])) ++end;
+  return end - pos;
+}
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+  if (text.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(text[i])) != word[i]) return false;
+  return true;
+}
+
+[[noreturn]] void not_a_number(std::string_view whole, std::string_view why) {
+  throw UnitError("'" + std::string(whole) + "' is not a number" + std::string(why));
+}
+
+// The exponent after 'e' or 'E' at text[pos]: [+|-] DIGITS; sets n.exponent and n.length.
+void read_exponent(std::string_view text, std::size_t pos, WrittenNumber& n) {
+  const bool negative = pos < text.size() && text[pos] == '-';
+  if (pos < text.size() && (text[pos] == '+' || text[pos] == '-')) ++pos;
+  const std::size_t digits = digits_from(text, pos);
+  if (digits == 0) not_a_number(text, ": 'e' must be followed by a whole exponent, e.g. 1e-3");
+  long long magnitude = 0;
+  for (std::size_t i = pos; i < pos + digits; ++i)
+    magnitude = std::min(kMaxWrittenExponent, magnitude * 10 + (text[i] - '0'));
+  n.exponent = negative ? -magnitude : magnitude;
+  n.length = pos + digits;
+}
+
+// Reads the number that starts `text` (trimmed); UnitError unless it is one as defined above.
+WrittenNumber read_number(std::string_view text) {
+  std::size_t pos = 0;
+  if (pos < text.size() && (text[pos] == '+' || text[pos] == '-')) ++pos;
+  const std::string_view rest = text.substr(pos);
+  if (starts_with_word(rest, "inf") || starts_with_word(rest, "nan"))
+    throw UnitError("'" + std::string(text) + "': value must be a finite number");
+  const std::size_t whole_digits = digits_from(text, pos);
+  std::size_t end = pos + whole_digits;
+  std::size_t fraction_digits = 0;
+  if (end < text.size() && text[end] == '.') {
+    fraction_digits = digits_from(text, end + 1);
+    end += 1 + fraction_digits;
   }
-  const std::string shifted = mantissa + "e" + std::to_string(exponent + shift);
+  if (whole_digits + fraction_digits == 0) not_a_number(text, "");
+  const bool hex_prefix = end == pos + 1 && text[pos] == '0' && end < text.size() &&
+                          (text[end] == 'x' || text[end] == 'X');
+  if (hex_prefix) not_a_number(text, " (hexadecimal is not accepted)");
+  WrittenNumber n;
+  const std::size_t plus = text[0] == '+' ? 1 : 0;  // from_chars takes no '+'
+  n.mantissa = std::string(text.substr(plus, end - plus));
+  n.length = end;
+  if (end < text.size() && (text[end] == 'e' || text[end] == 'E')) read_exponent(text, end + 1, n);
+  // No unit starts with these: "1.2.3", "1e3.5", "1e3e2" and "1+2" are malformed numbers.
+  if (n.length < text.size() &&
+      std::string_view(".+-eE").find(text[n.length]) != std::string_view::npos)
+    not_a_number(text, "");
+  return n;
+}
+
+// The number times 10^shift, rounded once: the shift is added to the decimal exponent and
+// from_chars rounds the exact decimal to the nearest double. A value that overflows, or that
+// is not zero and rounds to zero, is out of range (docs/input-reference.md).
+double value_of(const WrittenNumber& n, int shift, std::string_view whole) {
+  const std::string text = n.mantissa + "e" + std::to_string(n.exponent + shift);
   double value = 0.0;
-  const auto [end, ec] = std::from_chars(shifted.data(), shifted.data() + shifted.size(), value);
-  if (ec != std::errc()) throw UnitError("'" + std::string(whole) + "': value out of range");
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range || !std::isfinite(value))
+    throw UnitError("'" + std::string(whole) + "': value out of range");
+  if (ec != std::errc() || end != text.data() + text.size())
+    throw std::logic_error("unreadable normalised number '" + text + "'");
   return value;
 }
 
@@ -208,25 +286,11 @@ struct Parsed {
 Parsed parse(std::string_view text) {
   const std::string_view trimmed = trim(text);
   if (trimmed.empty()) throw UnitError("empty value; expected a number with an optional unit");
-  const std::string_view unsigned_text = trimmed.front() == '+' ? trimmed.substr(1) : trimmed;
-  double value = 0.0;
-  const char* first = unsigned_text.data();
-  const char* last = first + unsigned_text.size();
-  const auto [end, ec] = std::from_chars(first, last, value);
-  if (ec == std::errc::result_out_of_range) {
-    throw UnitError("'" + std::string(trimmed) + "': value out of range");
-  }
-  if (ec != std::errc()) {
-    throw UnitError("'" + std::string(trimmed) + "' is not a number");
-  }
-  if (!std::isfinite(value)) {
-    throw UnitError("'" + std::string(trimmed) + "': value must be a finite number");
-  }
-  const std::string_view number = unsigned_text.substr(0, static_cast<std::size_t>(end - first));
-  const std::string_view unit = trim(unsigned_text.substr(number.size()));
-  if (unit.empty()) return {{value, kDimensionless}, false};
+  const WrittenNumber number = read_number(trimmed);
+  const std::string_view unit = trim(trimmed.substr(number.length));
+  if (unit.empty()) return {{value_of(number, 0, trimmed), kDimensionless}, false};
   const Factor f = UnitExpression(unit, trimmed).parse();
-  return {{scale_by_power_of_ten(number, f.exponent10, trimmed), f.dimension}, true};
+  return {{value_of(number, f.exponent10, trimmed), f.dimension}, true};
 }
 
 std::string with_article(const std::string& noun) {

@@ -45,8 +45,10 @@ struct Quantity {
   Dimension dimension;
 };
 
-// Parses "VALUE" or "VALUE UNIT", where UNIT is a product of known units with optional
-// integer powers, separated by '*' or '/', e.g. "J/m^2/us", "kg/m^3", "1/s", "m/s".
+// Parses "VALUE" or "VALUE UNIT", where VALUE is a decimal number ("810", "+1.5E-03", ".5",
+// "1e+12"; no hexadecimal, inf or nan) and UNIT is a product of known units with optional
+// integer powers, separated by '*' or '/', e.g. "J/m^2/us", "kg/m^3", "1/s", "m/s". A value
+// whose SI value overflows a double, or is not zero and rounds to zero, is out of range.
 // A bare number is taken as SI and reported as dimensionless (the caller decides whether a bare
 // number is acceptable for the expected dimension). Throws UnitError on malformed text.
 Quantity parse_quantity(std::string_view text);
