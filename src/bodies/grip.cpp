@@ -53,7 +53,10 @@ std::optional<std::size_t> other_point_in_box(const Bodies& s, const BodyRange& 
 
 void take_grip(Bodies& s, const case_file::Grip& grip) {
   Points& P = s.points;
-  for (int d = 0; d < 3; ++d) std::fill(P.velocity[d].begin(), P.velocity[d].end(), 0.0);
+  for (int d = 0; d < 3; ++d) {  // at rest: no velocity, and no motion over a last step
+    std::fill(P.velocity[d].begin(), P.velocity[d].end(), 0.0);
+    std::fill(P.displacement[d].begin(), P.displacement[d].end(), 0.0);
+  }
   const BodyRange& body = *std::find_if(s.bodies.begin(), s.bodies.end(),
                                         [&](const BodyRange& b) { return b.name == grip.body; });
   const Eigen::Vector3d side = (grip.side.norm() > 0.0 ? grip.side : grip.velocity).normalized();

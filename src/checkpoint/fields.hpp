@@ -68,8 +68,12 @@ void fields(Archive& a, mpm::State& s) {
   // The pull-off test's grip (bodies/grip.hpp); absent from checkpoints before the MPM's
   // (2026-12-05), whose runs had none.
   a.optional("mpm/gripped", s.gripped);
-  if constexpr (Archive::kReading)
+  if constexpr (Archive::kReading) {
     if (s.gripped.size() != s.points.size()) s.gripped.assign(s.points.size(), 0);
+    // A checkpoint is written after a step, whose dt its clock holds: the step the points'
+    // displacements span (the absorbing dashpots' velocity, mpm/boundaries.hpp).
+    s.displacement_dt = s.step > 0 ? s.dt : 0.0;
+  }
 }
 
 template <class Archive>

@@ -32,11 +32,14 @@ void apply_node_constraints(State& s, bool force_too) {
 void apply_absorbing_dashpots(State& s) {
   Points& P = s.points;
   const long count = static_cast<long>(s.absorbing.size());
+  const double inverse_dt = s.displacement_dt > 0.0 ? 1.0 / s.displacement_dt : 0.0;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < count; ++i) {
     AbsorbingPoint& a = s.absorbing[i];
     for (int d = 0; d < 3; ++d)
-      s.external_force[d][a.point] = -a.damping[d] * P.velocity[d][a.point];
+      s.external_force[d][a.point] =
+          -a.damping[d] *
+          (inverse_dt > 0.0 ? P.displacement[d][a.point] * inverse_dt : P.velocity[d][a.point]);
   }
 }
 

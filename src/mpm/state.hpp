@@ -89,6 +89,9 @@ struct State : bodies::Bodies {
   bool heat_conduction = false;
   double max_diffusivity = 0.0;
   std::size_t departing = 0;  // points that left the grid in this step (mpm/departures.hpp)
+  // The time step that Points::displacement spans (the last step's; 0 before the first): the
+  // absorbing dashpots read the velocity from it (mpm/boundaries.hpp).
+  double displacement_dt = 0.0;
 };
 
 // Calls f.template operator()<Shape, Axisymmetric>() for the run's shape function and geometry:

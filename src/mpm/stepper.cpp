@@ -164,6 +164,7 @@ void musl_from_contact(State& s) {
   shares.rebalance();
   s.max_signal_speed = max_speed;
   account_absorbed_work(s);
+  s.displacement_dt = s.dt;
   s.time += s.dt;  // step 12: the grid is reset
   ++s.step;        //   by the next step's clear
 }

@@ -115,7 +115,7 @@ TEST(BondPersistence, ThreeDimensionalInterfaceHolds) {
                         {"grid.faces", "{xmin: roller, ymin: roller}"},
                         {"bodies.particle.spacing", "0.25 um"},
                         {"bodies.substrate.spacing", "0.25 um"},
-                        {"bonding.critical_energy", "60 J/m^2"},
+                        {"bonding.critical_energy", "50 J/m^2"},
                         {"bonding.critical_energy_rate", "2.8207e5 J/m^2/us"},
                         {"bonding.nodal_average", "count"}},
                        1000);

@@ -23,10 +23,14 @@ TEST(Verification, SlidingImpactAgreesBetweenRzAnd3d) {
                 a * 1e-6, c * 1e-6, 100.0 * (a / c - 1.0));
     EXPECT_NEAR(a / c, 1.0, 0.05) << "body " << b;
   }
-  // The particle's speed, which the contact force decides: the models agree within 1 %.
+  // The particle's speed, which the contact force decides, and also the absorbing faces 10 um
+  // below and 15 um out, whose reflections are back from 3 ns: within 2 % (measured 1.89 % with
+  // the dashpots on the grid's velocity, 0.16 % with them on the points' FLIP velocity before
+  // issue 52, 1.24 % with free faces; each model's own dashpot change moved it 2.7 % in r-z
+  // and 0.6 % in 3D, so the bound is the boundary treatment's, not the contact's).
   const double vz_rz = rz.summary.bodies.at(0).velocity[2];
   const double vz_3d = full.summary.bodies.at(0).velocity[2];
-  EXPECT_NEAR(vz_rz / vz_3d, 1.0, 0.01);
+  EXPECT_NEAR(vz_rz / vz_3d, 1.0, 0.02);
 }
 
 }  // namespace
