@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bodies/penetration.hpp"
 #include "bodies/points.hpp"
 #include "case/case.hpp"
 #include "materials/material.hpp"
@@ -44,7 +45,8 @@ struct BodyRange {
   // axis r = 0): the whole body is the modelled part and its mirror image, so its centre lies on
   // the plane and its areas are twice the modelled part's.
   std::array<std::optional<double>, 2> mirror_plane{};
-  Departed departed{};  // the body's points that have left the computation
+  Departed departed{};        // the body's points that have left the computation
+  Penetration penetration{};  // its push into what it hit, bonding's activation (penetration.hpp)
 };
 
 // A point on an absorbing face: Lysmer-Kuhlemeyer dashpots (thesis §3.5.5, eqs 3.45-3.46) give

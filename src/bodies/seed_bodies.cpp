@@ -204,6 +204,7 @@ void lay_out_bodies(const case_file::Case& c, const std::vector<SeededBody>& see
                   P.velocity[2][q] * P.velocity[2][q]);
     s.max_signal_speed = std::max(s.max_signal_speed, P.sound_speed[q] + speed);
   }
+  start_penetration(s);
 }
 
 }  // namespace coldspray::bodies

@@ -16,6 +16,7 @@ BondLaw BondLaw::from_case(const case_file::Bonding& b, double cell_size) {
   law.critical_energy_rate = b.critical_energy_rate;
   law.floor = b.floor;
   law.cell_size = cell_size;
+  law.critical_penetration = b.critical_penetration;
   return law;
 }
 

@@ -16,6 +16,8 @@ struct BondLaw {
   double critical_energy_rate = 0.0;  // Gdot_c, J/m^2/s
   double floor = 0.1;                 // lower bound of 1 - ln(rate ratio)
   double cell_size = 0.0;             // DCell of eq 4.17, m
+  // Bonds form only between activated pairs (bodies::pair_activated); 0: always.
+  double critical_penetration = 0.0;
 
   static BondLaw from_case(const case_file::Bonding& b, double cell_size);
   bool enabled() const { return model != case_file::BondingModel::None; }

@@ -188,6 +188,12 @@ struct Bonding {
   // eps_bond >= floor eps_c and G_bond >= floor G_c: the logarithm of eqs 4.4 and 4.16b
   // exceeds 1 at jetting rates and would make them negative (docs/bonding.md).
   double floor = 0.1;
+  // A bond forms only once the impact that brought the pair together has penetrated this share
+  // of the impacting body's size, and then wherever the pair touches (bodies/penetration.hpp,
+  // docs/bonding.md "Activation"); 0: from the first contact where eq 4.7 says, the thesis'
+  // model. Default: the project's calibration for al-ptw on al-ptw at D/40
+  // (examples/calibration/al-activation.yaml, docs/validation/critical-velocity.md).
+  double critical_penetration = 0.44248;
   NodalAverage nodal_average = NodalAverage::Weight;
   Debond debond;
 

@@ -196,6 +196,8 @@ void fields(IO& io, Bonding& b) {
   io.quantity("critical_energy_rate", b.critical_energy_rate, units::kEnergyPerAreaPerTime,
               kOptional, kPositive);
   io.quantity("floor", b.floor, units::kDimensionless, kOptional, kFraction);
+  io.quantity("critical_penetration", b.critical_penetration, units::kDimensionless, kOptional,
+              Range{0.0, 1.0, false, true});
   io.scalar("nodal_average", b.nodal_average, kNodalAverageNames, kOptional);
   io.section("debond", b.debond, kOptional);
 }

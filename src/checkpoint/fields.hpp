@@ -42,6 +42,14 @@ void fields(Archive& a, bodies::Bodies& s) {
     const std::string at = "bodies/" + std::to_string(b) + "/";
     a(at + "begin", s.bodies[b].begin), a(at + "end", s.bodies[b].end);
     fields(a, s.bodies[b].departed, at + "departed/");
+    // Absent from checkpoints before bonding's activation (2026-12-06): such a run continues as
+    // if its bodies touched first at the restart.
+    bodies::Penetration& pen = s.bodies[b].penetration;
+    a.optional(at + "penetration/first_contact", pen.first_contact);
+    a.optional(at + "penetration/start", pen.start);
+    a.optional(at + "penetration/last", pen.last);
+    a.optional(at + "penetration/largest", pen.largest);
+    a.optional(at + "penetration/peak", pen.peak);
   }
   std::vector<std::size_t> point(s.absorbing.size());
   std::vector<std::array<double, 3>> damping(s.absorbing.size());

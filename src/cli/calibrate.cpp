@@ -60,6 +60,56 @@ void print_results(const CalibrationFile& file, const std::vector<studies::GridR
       out_dir.string(), out_dir.string());
 }
 
+void print_activation(const CalibrationFile& file,
+                      const std::vector<studies::ActivationGridResult>& results,
+                      const std::filesystem::path& out_dir) {
+  for (const studies::ActivationGridResult& g : results) {
+    std::cout << fmt::format("grid {}:\n", g.grid);
+    for (std::size_t s = 0; s < file.plan.sizes.size(); ++s) {
+      const studies::CalibrationSize& size = file.plan.sizes[s];
+      const studies::PenetrationLaw& law = g.laws[s];
+      std::cout << fmt::format("  {:.6g} um at {:.6g} m/s: penetration {:.5g} (~ v^{:.3g})",
+                               size.diameter * 1e6, size.velocity, law.at_velocity, law.exponent);
+      if (s < g.predicted.size())
+        std::cout << fmt::format(", vcrit {:.5g} m/s ({:+.2f} %)", g.predicted[s],
+                                 100.0 * (g.predicted[s] / size.velocity - 1.0));
+      std::cout << "\n";
+    }
+    if (g.critical_penetration)
+      std::cout << fmt::format("  calibrated: critical_penetration = {:.5g}\n",
+                               *g.critical_penetration);
+    else
+      std::cout << "  not calibrated: " << g.diagnosis << "\n";
+  }
+  std::cout << fmt::format(
+      "results in {}/ (calibration.json, runs.csv); check with coldspray vcrit --set "
+      "bonding.critical_penetration=VALUE\n",
+      out_dir.string());
+}
+
+// Runs this rank's share of the study, then rank 0 analyses it.
+void calibrate_file(const CalibrationFile& file, const studies::CalibrationRunOptions& o,
+                    const studies::MpiSession& mpi) {
+  const studies::CalibrationCounts n =
+      file.activation
+          ? studies::run_activation_calibration(
+                activation_plan(file),
+                [&](const studies::ActivationRun& run) { return activation_case(file, run); }, o)
+          : studies::run_calibration(
+                file.plan,
+                [&](const studies::CalibrationRun& run) { return calibration_case(file, run); }, o);
+  std::cout << fmt::format("calibrate{}: {} impacts, {} run now ({} failed), {} finished before\n",
+                           mpi.size() > 1 ? fmt::format(" rank {}/{}", mpi.rank(), mpi.size()) : "",
+                           n.runs, n.ran, n.failed, n.skipped);
+  mpi.barrier();
+  if (mpi.rank() != 0) return;
+  if (file.activation)
+    print_activation(file, studies::analyse_activation(activation_plan(file), o.out_dir, file.name),
+                     o.out_dir);
+  else
+    print_results(file, studies::analyse_calibration(file.plan, o.out_dir, file.name), o.out_dir);
+}
+
 }  // namespace
 
 void add_calibrate(CLI::App& app) {
@@ -72,8 +122,8 @@ void add_calibrate(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   auto* sub = app.add_subcommand(
       "calibrate",
-      "Calibrate the bonding model's parameters on two particle sizes (thesis §4.1.2, §5.1; "
-      "docs/studies.md)");
+      "Calibrate the bonding model's parameters, or its activation, on particle sizes at their "
+      "critical velocities (thesis §4.1.2, §5.1; docs/studies.md)");
   sub->add_option("file", opt->file, "Calibration file (YAML)")->required();
   sub->add_option("--out", opt->out_dir, "Output folder (default out/NAME)");
   sub->add_option("--jobs", opt->jobs, "Impacts run at once in this process (default 1)")
@@ -92,16 +142,7 @@ void add_calibrate(CLI::App& app) {
     o.progress = !opt->quiet;
     o.rank = mpi.rank();
     o.ranks = mpi.size();
-    const studies::CalibrationCounts n = studies::run_calibration(
-        file.plan, [&](const studies::CalibrationRun& run) { return calibration_case(file, run); },
-        o);
-    std::cout << fmt::format(
-        "calibrate{}: {} impacts, {} run now ({} failed), {} finished before\n",
-        mpi.size() > 1 ? fmt::format(" rank {}/{}", mpi.rank(), mpi.size()) : "", n.runs, n.ran,
-        n.failed, n.skipped);
-    mpi.barrier();
-    if (mpi.rank() != 0) return;
-    print_results(file, studies::analyse_calibration(file.plan, o.out_dir, file.name), o.out_dir);
+    calibrate_file(file, o, mpi);
   });
 }
 

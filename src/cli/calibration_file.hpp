@@ -10,6 +10,8 @@
 
 #include "case/case.hpp"
 #include "case/load.hpp"
+#include "cli/impact_case.hpp"
+#include "studies/activation_calibration.hpp"
 #include "studies/calibration.hpp"
 
 namespace coldspray::cli {
@@ -21,11 +23,18 @@ struct CalibrationFile {
   std::string substrate_material;  // empty: the particle's
   std::string model = "energy";    // energy | strain: which two parameters x1, x2 are
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
-  double end_time = 80e-9;
+  SetUp setup = SetUp::Similar;       // the impacts' set-up (cli/impact_case.hpp)
+  std::optional<double> end_time;     // unset: the set-up's
+  bool verdict_window_given = false;  // metrics.verdict_window given: not the set-up's
   std::optional<double> floor;
-  case_file::Debond debond;          // the cases' bonding.debond (the debonding law)
+  std::optional<double> critical_penetration;  // the cases' bonding.critical_penetration
+  case_file::Debond debond;                    // the cases' bonding.debond (the debonding law)
   case_file::ImpactMetrics metrics;  // the cases' metrics section: the verdict's window, ...
-  studies::CalibrationPlan plan;
+  studies::CalibrationPlan plan;     // its grids and sizes serve `calibrates: critical-penetration`
+  // calibrates: critical-penetration (studies/activation_calibration.hpp) instead of the model's
+  // two parameters, each size's runs at its velocity times (1 -+ speed_step).
+  bool activation = false;
+  double speed_step = 0.02;
   // Where values were given, "FILE:LINE:COLUMN", so that a problem found in a generated case
   // is reported there: per grid, per size, and the parameters.
   std::vector<std::string> grid_where, size_where;
@@ -33,6 +42,10 @@ struct CalibrationFile {
 };
 
 CalibrationFile read_calibration_file(const std::string& path);
+
+studies::ActivationPlan activation_plan(const CalibrationFile& file);
+// The impact of one run of `calibrates: critical-penetration`, checked like a case file.
+case_file::Case activation_case(const CalibrationFile& file, const studies::ActivationRun& run);
 
 // The impact case of one run of the calibration (cli/impact_case.hpp), checked like a case file;
 // errors name the calibration file's line that gave the value.

@@ -110,6 +110,8 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
   }
   line("bonding:");
   line("  model: " + file.bonding);
+  line("metrics:");
+  line(fmt::format("  verdict_window: {} ns", number(file.verdict_window * 1e9)));
   line("output:");
   line("  history_interval: 0.5 ns");
   line("  snapshot_interval: 10 ns");

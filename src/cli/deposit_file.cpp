@@ -11,6 +11,7 @@
 #include "case/codecs.hpp"
 #include "case/document.hpp"
 #include "case/reader.hpp"
+#include "cli/impact_case.hpp"
 #include "cli/impact_options.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
@@ -86,7 +87,7 @@ void fields(IO& io, ParticlesEntry& p) {
 
 struct SubstrateEntry {
   std::string material;
-  double thickness = 10e-6;  // thesis Table 5.3's 10 um
+  std::optional<double> thickness;  // unset: the size-similar set-up's, 1.5 typical diameters
   std::optional<double> margin;
   double temperature = 298.0;
   int coarsening = 0;
@@ -116,7 +117,8 @@ struct FileEntry {
   SubstrateEntry substrate;
   PatchEntry patch;
   double arrival_window = 0.0;
-  double settle_time = 80e-9;  // the thesis reads its impacts 80 ns after contact (§5.2.2)
+  // Unset: a verdict window after the typical particle has left the contact (cli/impact_case.hpp).
+  std::optional<double> settle_time;
   std::optional<double> voxel;
   std::string bonding = "energy", contact_normal = "substrate";
 };
@@ -175,20 +177,27 @@ DepositFile read_deposit_file(const std::string& path) {
   d.substrate_material = f.substrate.material.empty() ? d.material : f.substrate.material;
   d.temperature = f.particles.temperature;
   d.substrate_temperature = f.substrate.temperature;
-  d.substrate_thickness = f.substrate.thickness;
   d.coarsening = f.substrate.coarsening;
-  d.settle_time = f.settle_time;
   d.bonding = f.bonding;
   d.contact_normal = f.contact_normal;
-  try {
-    std::tie(d.cell_size, d.spacing) = parse_grid(f.grid);
-  } catch (const UnitError& e) {
-    throw InputError(d.grid_where, "grid", e.what());
-  }
 
   studies::DepositPlan& plan = d.plan;
   plan.count = f.particles.count;
   plan.diameter = size_distribution(f.particles.diameter);
+  // The size-similar set-up (docs/impact.md) for the distribution's typical particle: the grid
+  // as cells across it, the substrate and the times in proportion to it.
+  const double typical = plan.diameter.centre;
+  try {
+    const GridChoice grid = parse_grid_choice(f.grid);
+    d.cell_size = grid.cell(typical);
+    d.spacing = grid.point_spacing(typical);
+  } catch (const UnitError& e) {
+    throw InputError(d.grid_where, "grid", e.what());
+  }
+  d.substrate_thickness = f.substrate.thickness.value_or(kSimilarSubstrateHeight * typical);
+  d.verdict_window = 20e-9 * typical / kThesisTimesDiameter;
+  d.settle_time =
+      f.settle_time.value_or(d.verdict_window + kContactTimes * typical / f.particles.velocity);
   plan.speed = f.particles.velocity;
   plan.speed_exponent = f.particles.velocity_exponent;
   plan.speed_diameter = f.particles.velocity_diameter.value_or(plan.diameter.centre);

@@ -21,6 +21,7 @@ struct DepositFile {
   int coarsening = 0;                        // levels of the substrate's coarsened seeding
   double cell_size = 0.0, spacing = 0.0;     // m
   double settle_time = 80e-9;                // s, run on after the last arrival
+  double verdict_window = 20e-9;             // s, the cases' metrics.verdict_window
   double voxel = 0.0;                        // the porosity's voxel edge, m (default: spacing)
   std::string bonding = "energy";
   std::string contact_normal = "substrate";  // or a contact.normal (deposit_file.cpp)

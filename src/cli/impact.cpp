@@ -98,6 +98,11 @@ void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream
   if (substrate != s.bodies.end())
     out << fmt::format(", crater depth {:.3g} um", substrate->impact.crater_depth * 1e6);
   out << "\n";
+  if (c.bonding.model != case_file::BondingModel::None && c.bonding.critical_penetration > 0.0)
+    out << fmt::format(
+        "  penetration {:.4g} of its size, {} the critical {:.4g} (bonding.critical_penetration)\n",
+        m.penetration, m.penetration >= c.bonding.critical_penetration ? "reaching" : "short of",
+        c.bonding.critical_penetration);
 }
 
 }  // namespace

@@ -12,7 +12,56 @@
 
 namespace coldspray::cli {
 
-// The substrate cylinder for a particle diameter, m (docs/impact.md, "The substrate"):
+// Which single-particle set-up `impact` (and `vcrit`, `calibrate`) builds (docs/impact.md,
+// "The set-up").
+enum class SetUp {
+  // Everything in proportion to the particle's diameter d: the grid as cells per diameter, the
+  // substrate as multiples of d, the times as multiples of d. Without rate effects an impact is
+  // then self-similar (Assadi et al., Acta Mater 116 (2016) 382, Fig 13), so that a size effect
+  // is the material's, not the set-up's.
+  Similar,
+  // Thesis Table 5.3's substrates, 10 um high at every size, the 0.7/0.175 um grid and 80 ns.
+  Thesis,
+};
+
+// The size-similar set-up's proportions (docs/impact.md, "The set-up"):
+// - the substrate cylinder kSimilarSubstrateDiameter d across and kSimilarSubstrateHeight d
+//   high, absorbing at its bottom and side: doubling both moved the particle's largest
+//   penetration, which decides bonding, by 0.15-0.21 % (14 um at 810 m/s, 30 um at 770 m/s,
+//   D/20 and D/40), where from 3 d x 1.5 d it moved 0.50-0.56 %, and so vcrit by over 0.5 %;
+// - its points coarsened kSimilarCoarsening levels away from the impact, at most to the cell
+//   (kCoarseningFineRadius, kCoarseningFineDepth below): the penetration moved by 0.01-0.06 %
+//   against the uniform substrate's, at a quarter of the points;
+// - kSpacingsPerCell point spacings per cell, the thesis' 0.7/0.175 um (4 per cell, §5.1.3);
+// - the times of the thesis' 14 um case (20 ns verdict window, 0.5 ns history, 10 ns snapshots;
+//   §5.2.2) times d / kThesisTimesDiameter, as the ringing the window averages (d / c) grows as
+//   d; the run ends a window after kContactTimes d / v, the particle's impact (its compression
+//   ends after 0.95-1.0 d / v and it has left the substrate by 1.3 d / v in every run measured,
+//   14 and 30 um at 730-850 m/s, D/20-D/80).
+inline constexpr double kSimilarSubstrateDiameter = 4.0, kSimilarSubstrateHeight = 2.0;
+inline constexpr int kSimilarCoarsening = 2;
+inline constexpr double kSpacingsPerCell = 4.0;
+inline constexpr double kDefaultCellsPerDiameter = 40.0;
+// In 3D, D/20: at D/40 a quarter model has 8 times the points and twice the steps of D/20 (about
+// 40 min an impact on 2 cores, and over the default point cap by the uniform count); at D/20 the
+// 3D quarter's critical velocity is within 0.41 % of r-z's at D/20, and D/20 is 1.7 % above D/40
+// (docs/validation/critical-velocity.md).
+inline constexpr double kDefaultCellsPerDiameter3d = 20.0;
+inline constexpr double kThesisTimesDiameter = 14e-6;  // m
+inline constexpr double kContactTimes = 2.0;
+
+// How the grid is given: cells across the particle's diameter ("D/40"), or an absolute cell
+// size and point spacing ("0.7um/0.175um").
+struct GridChoice {
+  double cells_per_diameter = 0.0;        // > 0: cell d / N, spacing the cell / kSpacingsPerCell
+  double cell_size = 0.0, spacing = 0.0;  // m, when cells_per_diameter is 0
+  double cell(double diameter) const;
+  double point_spacing(double diameter) const;
+  std::string text() const;  // as given: "D/40" or "0.7um/0.175um"
+};
+
+// The substrate cylinder for a particle diameter, m. Similar: kSimilarSubstrateDiameter d by
+// kSimilarSubstrateHeight d. Thesis (docs/impact.md, "The thesis' set-up"):
 // - 14-30 um: linear interpolation in thesis Table 5.3 (14/18/22/26/30 um particles on
 //   30/36/44/46/50 um cylinders, 10 um high), so the listed sizes are reproduced exactly;
 // - below 14 um: the 14 um case scaled, diameter 30/14 d (the ratio the table starts from);
@@ -26,7 +75,7 @@ struct SubstrateSize {
   double diameter = 0.0;
   double height = 0.0;
 };
-SubstrateSize substrate_size(double particle_diameter);
+SubstrateSize substrate_size(double particle_diameter, SetUp setup);
 
 // The substrate's coarsened seeding (docs/mpm.md, "Coarsened seeding"): fine within
 // kCoarseningFineRadius D of the impact's axis and kCoarseningFineDepth D of the top face, D the
@@ -49,8 +98,8 @@ struct ImpactSpec {
   std::string substrate_material;  // empty: the particle's material
   double diameter = 0.0;           // particle diameter, m
   double speed = 0.0;              // towards the substrate (along -z), m/s; > 0
-  double cell_size = 0.7e-6;       // m; thesis' recommended 0.7/0.175 um configuration (§5.1.3);
-                                   // 0 with peridynamics
+  SetUp setup = SetUp::Similar;    // MPM; peridynamics has the PD paper's
+  double cell_size = 0.7e-6;       // m; 0 with peridynamics (size_impact sets both by the set-up)
   double spacing = 0.175e-6;       // m
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
   Symmetry symmetry = Symmetry::Quarter;       // in 3D: model one quarter
@@ -62,7 +111,10 @@ struct ImpactSpec {
   std::optional<double> critical_strain;
   std::optional<double> critical_strain_rate;  // 1/s
   std::optional<double> floor;
-  double end_time = 80e-9;  // s: the thesis reads its results at 80 ns (§5.2.2)
+  double end_time = 80e-9;           // s: the thesis reads its results at 80 ns (§5.2.2)
+  double verdict_window = 0.0;       // s; 0: the schema's default (the thesis' 20 ns)
+  double history_interval = 0.5e-9;  // s
+  double snapshot_interval = 10e-9;  // s
   std::string shape_function = "gimp";
   int coarsening = 0;   // MPM: bodies.substrate.coarsening.levels; 0: a uniform substrate
   std::string command;  // the command line, echoed in the header comment
@@ -74,6 +126,12 @@ struct GeneratedCase {
   // Which option each generated value came from, so that errors name the option.
   std::vector<case_file::ValueOrigin> origins;
 };
+
+// Sets spec's grid, the substrate's coarsening, times and output intervals by its set-up and
+// diameter (docs/impact.md, "The set-up"): `grid` and `end_time`, where given, instead of the
+// set-up's.
+void size_impact(ImpactSpec& spec, const std::optional<GridChoice>& grid,
+                 const std::optional<double>& end_time);
 
 GeneratedCase impact_case(const ImpactSpec& spec);
 

@@ -41,8 +41,17 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
   sub.add_option("--substrate-material", o.substrate_material,
                  "Substrate material (default: the particle's)");
   particle_options();
-  sub.add_option("--grid", o.grid, "MPM: grid cell / point spacing (thesis §5.1.3)")
+  sub.add_option("--setup", o.setup,
+                 "MPM: similar (grid, substrate and times in proportion to the diameter) or "
+                 "thesis (Table 5.3's substrates, 0.7um/0.175um, 80 ns); docs/impact.md")
+      ->check(CLI::IsMember({"similar", "thesis"}))
       ->capture_default_str();
+  sub.add_option("--resolution", o.resolution,
+                 "MPM: cells across the particle's diameter, e.g. D/40 (the similar set-up's "
+                 "default in r-z, D/20 in 3D; point spacing a quarter of the cell)");
+  sub.add_option("--grid", o.grid,
+                 "MPM: an absolute grid cell / point spacing, e.g. 0.7um/0.175um (the thesis "
+                 "set-up's default, thesis §5.1.3)");
   sub.add_option("--spacing", o.spacing,
                  "Peridynamics: point spacing (default: the diameter / 50, as the PD paper)");
   sub.add_option("--geometry", o.geometry,
@@ -67,15 +76,17 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
   sub.add_option("--eps-c", o.eps_c, "Critical strain (strain model, eq 4.4)");
   sub.add_option("--eps-c-rate", o.eps_c_rate, "Critical strain rate, e.g. '8.5e8 1/s'");
   sub.add_option("--floor", o.floor, "Lower bound of the rate factor of eqs 4.4 and 4.16b");
-  sub.add_option("--end-time", o.end_time, "Simulated time")->capture_default_str();
+  sub.add_option("--end-time", o.end_time,
+                 "Simulated time (default: two contact times 2 d / v and a verdict window of "
+                 "20 ns x d / 14 um in the similar set-up, 80 ns in the thesis')");
   sub.add_option("--shape-function", o.shape_function, "Grid shape functions")
       ->check(CLI::IsMember({"gimp", "linear"}))
       ->capture_default_str();
   sub.add_option("--coarsening", o.coarsening,
                  "MPM: coarser substrate points away from the impact, LEVELS doublings of the "
-                 "spacing, at most up to the cell (docs/impact.md); 0: uniform")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+                 "spacing, at most up to the cell (docs/impact.md); 0: uniform (default: 2 in "
+                 "the similar set-up, 0 in the thesis')")
+      ->check(CLI::NonNegativeNumber);
 }
 
 std::string calibration_warning(const ImpactCaseOptions& o) {
@@ -103,6 +114,22 @@ std::pair<double, double> parse_grid(const std::string& text) {
             parse_with_unit(text.substr(i + 1), units::kLength)};
   }
   throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
+}
+
+GridChoice parse_grid_choice(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(' ');
+  if (first == std::string::npos || (text[first] != 'D' && text[first] != 'd')) {
+    const auto [cell, spacing] = parse_grid(text);
+    return {0.0, cell, spacing};
+  }
+  const std::size_t slash = text.find_first_not_of(' ', first + 1);
+  if (slash == std::string::npos || text[slash] != '/')
+    throw UnitError("expected D/N (N cells across the particle's diameter), got '" + text + "'");
+  const double cells = units::parse_as(text.substr(slash + 1), units::kDimensionless);
+  if (!(cells >= 2.0) ||
+      units::parse_quantity(text.substr(slash + 1)).dimension != units::kDimensionless)
+    throw UnitError("D/N needs a number of cells N >= 2, got '" + text + "'");
+  return {cells};
 }
 
 void check_cell_fits(double cell_size, double diameter, const std::string& where,
@@ -165,9 +192,16 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
   spec.speed = speed;
   spec.symmetry = o.symmetry == "none" ? Symmetry::None : Symmetry::Quarter;
   if (o.solver == "peridynamics") {
-    if (o.coarsening != 0)
+    if (o.coarsening)
       throw InputError("--coarsening", "",
                        "is the MPM's option: peridynamic families need one spacing");
+    for (const auto& [option, given] :
+         {std::pair{"--grid", !o.grid.empty()}, std::pair{"--resolution", !o.resolution.empty()},
+          std::pair{"--setup", o.setup != "similar"}})
+      if (given)
+        throw InputError(
+            option, "",
+            "is the MPM's option: peridynamics takes --spacing (the PD paper's set-up)");
     peridynamics_spec(o, spec);
   } else {
     if (spec.material.empty())
@@ -175,18 +209,32 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
     if (!o.spacing.empty())
       throw InputError("--spacing", "",
                        "is peridynamics' option: the MPM takes --grid CELL/SPACING");
+    spec.setup = o.setup == "thesis" ? SetUp::Thesis : SetUp::Similar;
+    if (!o.grid.empty() && !o.resolution.empty())
+      throw InputError("--resolution", "",
+                       "give --resolution D/N or --grid CELL/SPACING, not both");
+    const char* option = o.grid.empty() ? "--resolution" : "--grid";
+    std::optional<GridChoice> grid;
     try {
-      std::tie(spec.cell_size, spec.spacing) = parse_grid(o.grid);
+      if (!o.resolution.empty()) {
+        grid = parse_grid_choice(o.resolution);
+        if (grid->cells_per_diameter == 0.0)
+          throw UnitError("expected D/N, e.g. D/40 (an absolute grid is --grid), got '" +
+                          o.resolution + "'");
+      } else if (!o.grid.empty()) {
+        grid = parse_grid_choice(o.grid);
+      }
     } catch (const UnitError& e) {
-      throw InputError("--grid", "", e.what());
+      throw InputError(option, "", e.what());
     }
-    check_cell_fits(spec.cell_size, spec.diameter, "--grid");
+    spec.geometry =
+        o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
+    size_impact(spec, grid, optional_quantity("--end-time", o.end_time, units::kTime));
+    check_cell_fits(spec.cell_size, spec.diameter, option);
     if (o.contact != "repulsive" || !o.beta.empty())
       throw InputError(
           o.beta.empty() ? "--contact" : "--beta", "",
           "is peridynamics' option: the MPM's grid contact has no force law to choose");
-    spec.geometry =
-        o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
     spec.bonding = o.bonding.empty() ? "energy" : o.bonding;
   }
   spec.critical_energy = optional_quantity("--Gc", o.gc, units::kEnergyPerArea);
@@ -195,9 +243,11 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
   spec.critical_strain = optional_quantity("--eps-c", o.eps_c, units::kDimensionless);
   spec.critical_strain_rate = optional_quantity("--eps-c-rate", o.eps_c_rate, units::kRate);
   spec.floor = optional_quantity("--floor", o.floor, units::kDimensionless);
-  spec.end_time = parse_option_quantity("--end-time", o.end_time, units::kTime);
+  if (o.solver == "peridynamics")
+    spec.end_time =
+        o.end_time.empty() ? 80e-9 : parse_option_quantity("--end-time", o.end_time, units::kTime);
   spec.shape_function = o.shape_function;
-  spec.coarsening = o.coarsening;
+  if (o.coarsening) spec.coarsening = *o.coarsening;
   spec.command = command;
   return spec;
 }

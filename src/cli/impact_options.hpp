@@ -19,12 +19,14 @@ namespace coldspray::cli {
 // MPM needs --material), cu-jc, 3d and none for peridynamics (the PD paper's set-up).
 struct ImpactCaseOptions {
   std::string solver = "mpm";
-  std::string material, substrate_material, grid = "0.7um/0.175um", spacing;
+  std::string setup = "similar";  // similar | thesis (docs/impact.md, "The set-up")
+  std::string material, substrate_material, resolution, grid, spacing;
   std::string geometry, symmetry = "quarter", bonding;
   std::string gc, gc_rate, eps_c, eps_c_rate, floor;
   std::string contact = "repulsive", beta;
-  std::string end_time = "80ns", shape_function = "gimp";
-  int coarsening = 0;  // MPM: levels of the substrate's coarsened seeding; 0: uniform
+  std::string end_time, shape_function = "gimp";  // end_time empty: the set-up's
+  std::optional<int> coarsening;  // MPM: levels of the substrate's coarsened seeding; 0: uniform;
+                                  // unset: the set-up's
 };
 
 // --solver, --material (required with the MPM), --substrate-material, --grid (MPM), --spacing
@@ -39,6 +41,10 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
 // "CELL/SPACING" (e.g. 0.7um/0.175um) in metres: split at the '/' that a number follows, since
 // units hold '/' too (m/s). Throws UnitError.
 std::pair<double, double> parse_grid(const std::string& text);
+
+// "D/N", N > 0 cells across the particle's diameter (the size-similar set-up's resolution), or
+// "CELL/SPACING" as parse_grid. Throws UnitError.
+GridChoice parse_grid_choice(const std::string& text);
 
 // A particle narrower than two cells has next to no points and no shape to deform: InputError
 // at `where` (an option or a file location) and `key`, rather than the seeding's "no points".

@@ -11,10 +11,10 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
-#include "cli/thread_count.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/quantity_option.hpp"
 #include "cli/run_report.hpp"
+#include "cli/thread_count.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
 #include "io/output_folder.hpp"
@@ -131,7 +131,8 @@ void add_vcrit(CLI::App& app) {
     studies::write_vcrit_csv(o.out_dir / "vcrit.csv", rows);
     studies::write_vcrit_runs_csv(o.out_dir, o.diameters);
     std::cout << fmt::format(
-        "vcrit of {} (bisection over {:.6g}-{:.6g} m/s to {:.3g} m/s; bonded: the verdict of each "
+        "vcrit of {} (search over {:.6g}-{:.6g} m/s to {:.3g} m/s, cut where the penetration "
+        "reaches the critical one; bonded: the verdict of each "
         "impact's summary, undecided counted as not bonded):\n",
         opt->impact.material, o.vmin, o.vmax, o.tol);
     std::cout << "  d (um)  vcrit (m/s)  bracket (m/s)  margin at vcrit, below (m/s)  runs  "

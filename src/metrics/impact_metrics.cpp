@@ -115,6 +115,8 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   m.contact_area *= whole_body_factor(s, r);
   m.jetted_fraction = (jetted + r.departed.mass) / (mass + r.departed.mass);
   m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
+  m.penetration = r.penetration.size > 0.0 ? r.penetration.largest : kNaN;
+  m.penetration_peak_time = r.penetration.peak >= 0.0 ? r.penetration.peak : kNaN;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;
   m.pbcp = touched > 0.0 ? 100.0 * bonded / touched : 0.0;
   const double whole = whole_body_factor(s, r);

@@ -30,8 +30,12 @@ struct ImpactMeasures {
   double crater_depth = 0.0;
   // Diameter across the axis of the body's points that are not jetted, over that at t = 0.
   double flattening_ratio = 0.0;
-  double contact_area = 0.0;  // surface area of the points that touched another body, m^2
-  double bonded_area = 0.0;   // of those that keep a bond (bodies::Points::bonded_to), m^2
+  // The largest penetration since first contact over the body's size (bodies/penetration.hpp):
+  // bonding's activation. NaN for a body that started at rest.
+  double penetration = 0.0;
+  double penetration_peak_time = 0.0;  // when the compression ended, s; NaN: not yet
+  double contact_area = 0.0;           // surface area of the points that touched another body, m^2
+  double bonded_area = 0.0;            // of those that keep a bond (bodies::Points::bonded_to), m^2
   // bonded_area by the body the bond holds to, indexed by body (0 for the body itself), m^2.
   std::vector<double> bonded_area_with;
   // Eq 5.1's masses, of the whole body (symmetry planes counted): with D_bond > 0 and >= 1, kg.

@@ -50,13 +50,19 @@ void BondShadows::clear_sums(const ContactNodes& c) {
 
 // Every pair at every slot, also those the contact step skips for want of a normal: a shadow
 // that leaves a step early only costs its run that step alone, one that left late would be wrong.
-bool BondShadows::bonds_now(std::size_t k, const ContactNodes& c,
-                            case_file::NodalAverage average) const {
+bool BondShadows::bonds_now(std::size_t k, const ContactNodes& c, case_file::NodalAverage average,
+                            const std::vector<bodies::BodyRange>& bodies) const {
+  const double critical = laws_[k].critical_penetration;
   for (std::size_t s = 0; s < c.size(); ++s) {
     const auto slot = static_cast<std::int32_t>(s);
     for (int e1 = 0; e1 < c.body_count(slot); ++e1)
-      for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2)
-        if (bond_forms(nodal_bond(c, bond_sum_[k], slot, e1, e2, average))) return true;
+      for (int e2 = e1 + 1; e2 < c.body_count(slot); ++e2) {
+        const bool bonds =
+            critical > 0.0 ? bodies::pair_activated(bodies[c.body(slot, e1)].penetration,
+                                                    bodies[c.body(slot, e2)].penetration, critical)
+                           : bond_forms(nodal_bond(c, bond_sum_[k], slot, e1, e2, average));
+        if (bonds) return true;
+      }
   }
   return false;
 }

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bodies/bodies.hpp"
 #include "bodies/points.hpp"
 #include "bonding/bond_law.hpp"
 #include "mpm/contact.hpp"
@@ -42,7 +43,10 @@ class BondShadows {
   }
   // Whether shadow k's nodal D_bond (eq 4.7) holds at some pair of bodies at a contact node this
   // step: from then on its run differs from this one.
-  bool bonds_now(std::size_t k, const ContactNodes& c, case_file::NodalAverage average) const;
+  // With activation (law k's critical penetration > 0), at the step its pair of bodies at a
+  // contact node is activated (bodies::pair_activated): it bonds where it touches from then on.
+  bool bonds_now(std::size_t k, const ContactNodes& c, case_file::NodalAverage average,
+                 const std::vector<bodies::BodyRange>& bodies) const;
 
   // Shadow k's D_bond at P's surface points, and its sums into c.bond_sum: what the state would
   // hold, at this point of the step, had it run with law k.

@@ -288,8 +288,10 @@ double resolve_pair(ContactNodes& c, const ContactRule& rule, double dt, int bod
           : approaching;
   if (first_sweep) {
     c.pair_touching[k] = touching;
+    // An activated pair bonds where it touches; without activation, where eq 4.7 says.
     c.pair_bond_forms[k] =
-        rule.bonding && bond_forms(nodal_bond(c, slot, e1, e2, rule.nodal_average));
+        rule.bonding && rule.pair_may_bond(bm, bs, bodies) &&
+        (rule.activation ? touching : bond_forms(nodal_bond(c, slot, e1, e2, rule.nodal_average)));
   }
   const bool bonded = c.pair_bond_forms[k] || (rule.bonding && bond_holds(c.pair_bonded_sides[k]));
   if (!bonded && !(approaching && touching)) return 0.0;

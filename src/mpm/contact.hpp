@@ -128,6 +128,17 @@ struct ContactRule {
   // The direct bonding model is on: bonded nodes stick (thesis §4.1.1).
   bool bonding = false;
   case_file::NodalAverage nodal_average = case_file::NodalAverage::Weight;  // eq 4.6's divisor
+  // Bonding's activation is on (bonding.critical_penetration > 0; docs/bonding.md,
+  // "Activation"): an activated pair bonds wherever it touches. Off, eq 4.7 decides where (the
+  // thesis).
+  bool activation = false;
+  // Per ordered body pair [a * bodies + b]: 1 where bonds may form, the pair's impact having
+  // penetrated the bond law's critical share (bodies::pair_activated; the stepper refreshes it
+  // every step). Empty: every pair may.
+  std::vector<std::uint8_t> may_bond;
+  bool pair_may_bond(int a, int b, int bodies) const {
+    return may_bond.empty() || may_bond[static_cast<std::size_t>(a * bodies + b)] != 0;
+  }
   // With bonding, what a bond carries before it lets go (`bonding.debond`); disabled, a bond
   // holds for good.
   bonding::CohesiveLaw debond;
@@ -155,8 +166,9 @@ void choose_contact_normals(ContactNodes& contact, const ContactRule& rule,
 // For every pair with a normal, in a fixed order: the approach test (eq 3.29), with the gap check
 // the surfaces meeting by the end of the step, and then the sticking correction (eq 3.31)
 // reduced to its normal part, with a Coulomb-limited tangential part when friction > 0. Where
-// the pair is bonded (a bond forms there, nodal D_bond of eq 4.7 >= 1, or one kept on the points
-// holds) the correction is applied in full, normal and tangential, approaching or not: the bond
+// the pair is bonded (a bond forms there, where an activated pair touches or, without
+// activation, where its nodal D_bond of eq 4.7 >= 1; or one kept on the points holds) the
+// correction is applied in full, normal and tangential, approaching or not: the bond
 // force; with a debonding law, only up to the traction the bond's points can carry there, the
 // rest opening the bond (contact.opened_damage). Each correction changes the two bodies' momenta
 // by equal and opposite amounts, and their forces by the same over dt; `impulse`

@@ -228,6 +228,8 @@ State build_state(const case_file::Case& c) {
   s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid->cell_size);
   s.bonding = s.bond_law.enabled();
   s.contact_rule.bonding = s.bonding;
+  s.contact_rule.activation = s.bond_law.critical_penetration > 0.0;
+  s.contact_rule.may_bond.assign(s.bodies.size() * s.bodies.size(), 1);
   s.contact_rule.nodal_average = c.bonding.nodal_average;
   s.contact_rule.debond = bonding::CohesiveLaw::from_case(c.bonding);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {

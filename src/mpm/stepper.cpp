@@ -113,6 +113,20 @@ double stable_time_step(const State& s, double cfl) {
                                                                s.max_diffusivity));
 }
 
+void activate_bonding(State& s) {
+  if (!s.bonding) return;
+  std::vector<std::uint8_t>& may = s.contact_rule.may_bond;
+  if (s.bond_shadows.active()) {  // a run carrying shadows never bonds itself
+    std::fill(may.begin(), may.end(), 0);
+    return;
+  }
+  const std::size_t n = s.bodies.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      may[a * n + b] = may[b * n + a] = bodies::pair_activated(
+          s.bodies[a].penetration, s.bodies[b].penetration, s.bond_law.critical_penetration);
+}
+
 namespace {
 
 // Steps 1-4 up to the contact decision: the grid, the contact nodes with their normals, and what
@@ -121,6 +135,7 @@ template <class Shape, bool Axisymmetric>
 void musl_to_contact(State& s) {
   const int bodies = static_cast<int>(s.bodies.size());
   for (auto& i : s.contact_impulse) i = {0.0, 0.0, 0.0};
+  activate_bonding(s);  // where bonds may form this step (§4.1.1, docs/bonding.md)
   bin_points_into_blocks(s);
   s.grid.clear();
   apply_absorbing_dashpots(s);                          // external force, eq 3.46
@@ -181,6 +196,7 @@ void step_from_contact(State& s) {
       s, [&]<class Shape, bool Axisymmetric>() { musl_from_contact<Shape, Axisymmetric>(s); });
   bodies::raise_recorded_fault(s);
   if (s.departing > 0) remove_departed_points(s);
+  bodies::track_penetration(s);  // bonding's activation for the next step (docs/bonding.md)
 }
 
 void step(State& s) {

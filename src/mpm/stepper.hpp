@@ -13,6 +13,12 @@ double stable_time_step(const State& s, double cfl);
 // step (mpm/departures.hpp). Throws RunFault (naming body, point, time and cause) when a point's
 // state stops being finite, a point crosses the axis in r-z or a body's bulk leaves the grid; the
 // state is then that of the failed step.
+// Which pairs of bodies may bond this step (ContactRule::may_bond): those whose impact has
+// penetrated the bond law's critical share so far (bodies/penetration.hpp, docs/bonding.md
+// "Activation"), none while the run carries bond shadows. The penetration only grows, so an
+// activated pair stays so. The step calls it first.
+void activate_bonding(State& s);
+
 void step(State& s);
 
 // step() in two halves, split where the contact step decides which nodes are bonded, so that a

@@ -382,6 +382,7 @@ void step(State& s) {
     s.time += s.dt;
   }
   ++s.step;
+  bodies::track_penetration(s);  // bonding's activation, reported for both solvers
 }
 
 }  // namespace coldspray::pd

@@ -64,7 +64,7 @@ class Trunk {
       const double shared = seconds_since(t0);
       double handed_on = 0.0;
       for (std::size_t k = shadows_.size(); k-- > 0;)
-        if (shadows_.bonds_now(k, state_.contact, state_.contact_rule.nodal_average))
+        if (shadows_.bonds_now(k, state_.contact, state_.contact_rule.nodal_average, state_.bodies))
           handed_on += branch_off(k, shared);
       if (!shadows_.active()) return;
       if (!step(mpm::step_from_contact)) return;
@@ -183,6 +183,8 @@ class Trunk {
       branch->state.bond_shadows = {};
       shadows_.impose(k, branch->state.points, branch->state.contact);
       branch->state.bond_law = shadows_.law(k);
+      branch->state.contact_rule.activation = shadows_.law(k).critical_penetration > 0.0;
+      mpm::activate_bonding(branch->state);  // this step's, by its own law
       branch->member = i;
       branch->recorder = std::move(recorders_[i]);
       branch->recorder->add_wall(shared);

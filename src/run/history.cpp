@@ -13,7 +13,7 @@ std::string header(const bodies::Bodies& s) {
   for (const auto& b : s.bodies)
     for (const char* q : {"vx", "vy", "vz", "contact_fx", "contact_fy", "contact_fz", "cor",
                           "v_rest", "abp", "pbcp", "mean_eqps", "plastic_energy_density",
-                          "max_temperature", "jetted_fraction", "departed_mass"})
+                          "max_temperature", "jetted_fraction", "departed_mass", "penetration"})
       h += fmt::format(",{}.{}", b.name, q);
   return h + "\n";
 }
@@ -34,9 +34,10 @@ void HistoryWriter::record(double time, const metrics::EnergyBudget& e,
                        b.velocity[1], b.velocity[2], b.contact_force[0], b.contact_force[1],
                        b.contact_force[2]);
     const metrics::ImpactMeasures& m = b.impact;
-    row += fmt::format(",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
-                       m.cor, m.v_rest, m.abp, m.pbcp, b.mean_eqps, m.plastic_energy_density,
-                       b.max_temperature, m.jetted_fraction, b.departed.mass);
+    row += fmt::format(
+        ",{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", m.cor,
+        m.v_rest, m.abp, m.pbcp, b.mean_eqps, m.plastic_energy_density, b.max_temperature,
+        m.jetted_fraction, b.departed.mass, m.penetration);
   }
   out_.append(row + "\n");
 }

@@ -62,6 +62,8 @@ void write_summary_json(const Summary& s, const std::filesystem::path& path) {
                       {"jetted_fraction", m.jetted_fraction},
                       {"crater_depth", m.crater_depth},
                       {"flattening_ratio", m.flattening_ratio},
+                      {"penetration", number(m.penetration)},
+                      {"penetration_peak_time", number(m.penetration_peak_time)},
                       {"contact_area", m.contact_area},
                       {"bonded_area", m.bonded_area},
                       {"bonded_area_with", with},

@@ -23,6 +23,38 @@ std::string number(double v) {
   return s.str();
 }
 
+// Where to cut the bracket (lo, hi): at the guide's guess, kept clear of the ends, or at the
+// midpoint (find_threshold).
+class Cutter {
+ public:
+  Cutter(const ThresholdGuide& guide, double tol) : guide_(guide), tol_(tol) {}
+
+  double next(double lo, double hi) {
+    guided_ = false;
+    const double mid = 0.5 * (lo + hi);
+    if (!guide_ || slow_cuts_ >= 2) {
+      slow_cuts_ = 0;
+      return mid;
+    }
+    const double guess = guide_(lo, hi);
+    if (!std::isfinite(guess)) return mid;
+    guided_ = true;
+    const double clear = std::min(0.4 * tol_, 0.25 * (hi - lo));
+    return std::clamp(guess, lo + clear, hi - clear);
+  }
+
+  // The bracket's width before and after the last cut.
+  void narrowed(double before, double after) {
+    if (guided_) slow_cuts_ = after > 0.5 * before ? slow_cuts_ + 1 : 0;
+  }
+
+ private:
+  const ThresholdGuide& guide_;
+  double tol_;
+  bool guided_ = false;
+  int slow_cuts_ = 0;
+};
+
 }  // namespace
 
 std::optional<std::pair<double, bool>> ThresholdCache::find(double value) const {
@@ -60,7 +92,7 @@ std::string to_string(ThresholdStatus s) {
 
 ThresholdResult find_threshold(const std::function<bool(double)>& predicate, double lo, double hi,
                                double tol, int max_evals, ThresholdCache* cache,
-                               const ThresholdLimits& limits) {
+                               const ThresholdLimits& limits, const ThresholdGuide& guide) {
   if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi))
     throw std::invalid_argument("find_threshold: need finite lo < hi");
   if (!(tol >= 1e-8 * std::max(std::abs(lo), std::abs(hi))) || !(tol > 0.0))
@@ -146,10 +178,11 @@ ThresholdResult find_threshold(const std::function<bool(double)>& predicate, dou
     }
   }
 
-  // Bisection of (highest false, lowest true).
+  // Bisection of (highest false, lowest true), or the guide's cuts.
+  Cutter cutter(guide, tol);
   while (lowest_true - highest_false > tol) {
     const double before = lowest_true - highest_false;
-    const std::optional<bool> res = evaluate(0.5 * (highest_false + lowest_true));
+    const std::optional<bool> res = evaluate(cutter.next(highest_false, lowest_true));
     if (!res)
       return finish(ThresholdStatus::EvaluationLimit, "evaluation limit reached with bracket [" +
                                                           number(highest_false) + ", " +
@@ -157,6 +190,7 @@ ThresholdResult find_threshold(const std::function<bool(double)>& predicate, dou
     if (!monotone()) return non_monotone();
     if (!(lowest_true - highest_false < before))  // a cache hit on a bracket end: no progress
       return finish(ThresholdStatus::EvaluationLimit, "bracket at the cache's resolution");
+    cutter.narrowed(before, lowest_true - highest_false);
   }
   return finish(ThresholdStatus::Found,
                 "threshold in [" + number(highest_false) + ", " + number(lowest_true) + "]");

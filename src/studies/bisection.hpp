@@ -67,6 +67,11 @@ struct ThresholdResult {
   bool found() const { return status == ThresholdStatus::Found; }
 };
 
+// A guess of the threshold inside the bracket (highest false, lowest true), from what the
+// evaluations at its ends measured besides their result (the impacts' penetration, for vcrit);
+// NaN for none, and the bisection takes the midpoint.
+using ThresholdGuide = std::function<double(double highest_false, double lowest_true)>;
+
 // The threshold of a predicate that is false below it and true above. Evaluates lo and hi;
 // if lo is true, steps down by (hi - lo) (not below limits.floor) until a value is false; if hi
 // is false, steps up by (hi - lo) (not above limits.ceiling) until one is true; then bisects the
@@ -79,9 +84,14 @@ struct ThresholdResult {
 // inside the bracket, so a conflict shows up through lo and hi, the stepping, or the cache: an
 // exception confined to a narrow window the search never samples cannot be seen.) Throws
 // std::invalid_argument unless lo < hi, tol >= 1e-8 max(|lo|, |hi|) (coarser than the cache's
-// resolution), max_evals >= 2 and floor <= lo, hi <= ceiling.
+// resolution), max_evals >= 2 and floor <= lo, hi <= ceiling. With a `guide`, the bracket is
+// cut at its guess (regula falsi on a measured margin), kept min(0.4 tol, a quarter of the
+// bracket) inside its ends so that every evaluation narrows it; after two guided cuts in a row
+// that kept more than half of it, one midpoint cut (the safeguard of the Illinois and Dekker
+// methods against a guess that creeps up on one end).
 ThresholdResult find_threshold(const std::function<bool(double)>& predicate, double lo, double hi,
                                double tol, int max_evals, ThresholdCache* cache = nullptr,
-                               const ThresholdLimits& limits = {});
+                               const ThresholdLimits& limits = {},
+                               const ThresholdGuide& guide = {});
 
 }  // namespace coldspray::studies

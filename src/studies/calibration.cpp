@@ -86,6 +86,14 @@ std::vector<CalibrationRun> calibration_runs(const CalibrationPlan& plan, const 
   return runs;
 }
 
+std::vector<std::size_t> pending_runs(const std::vector<fs::path>& folders,
+                                      const CalibrationRunOptions& options,
+                                      CalibrationCounts& counts) {
+  io::make_output_folder(options.out_dir);  // InputError if it is a file, under one, unwritable
+  counts.runs = folders.size();
+  return pending_folders(folders, options.rank, options.ranks, counts.skipped);
+}
+
 CalibrationCounts run_calibration(const CalibrationPlan& plan,
                                   const CalibrationCaseMaker& make_case,
                                   const CalibrationRunOptions& options) {
@@ -95,13 +103,10 @@ CalibrationCounts run_calibration(const CalibrationPlan& plan,
       make_case({g, s, plan.x1.from, plan.x2.from, {}});
       make_case({g, s, plan.x1.to, plan.x2.to, {}});
     }
-  io::make_output_folder(options.out_dir);  // InputError if it is a file, under one, unwritable
   CalibrationCounts counts;
-  counts.runs = runs.size();
   std::vector<fs::path> folders;
   for (const CalibrationRun& run : runs) folders.push_back(run.folder);
-  const std::vector<std::size_t> pending =
-      pending_folders(folders, options.rank, options.ranks, counts.skipped);
+  const std::vector<std::size_t> pending = pending_runs(folders, options, counts);
   std::size_t done = 0, failed = 0;
   std::mutex report;
   const auto start = std::chrono::steady_clock::now();
@@ -204,8 +209,6 @@ Measured measure(const fs::path& folder) {
   m.usable = true;
   return m;
 }
-
-std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
 
 nlohmann::json classification_json(const Classification& c) {
   switch (c.by) {

@@ -97,6 +97,12 @@ struct CalibrationCounts {
   std::size_t runs = 0, skipped = 0, ran = 0, failed = 0;  // as SweepCounts
 };
 
+// Makes the study's output folder and returns the indices of `folders` this rank still has to
+// run, counting the study's runs and those already finished in `counts`.
+std::vector<std::size_t> pending_runs(const std::vector<std::filesystem::path>& folders,
+                                      const CalibrationRunOptions& options,
+                                      CalibrationCounts& counts);
+
 // Runs this rank's unfinished impacts (resumable, parallel, failures recorded; as a sweep).
 // Every (grid, size) case is loaded first at two corners of the parameter rectangle, so that bad
 // input stops the study before anything runs.

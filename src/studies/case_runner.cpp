@@ -1,6 +1,9 @@
 #include "studies/case_runner.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <vector>
 
@@ -82,6 +85,8 @@ std::vector<std::size_t> pending_folders(const std::vector<fs::path>& folders, i
   }
   return pending;
 }
+
+std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;

@@ -42,6 +42,8 @@ std::vector<std::size_t> pending_folders(const std::vector<std::filesystem::path
 
 // A CSV field, quoted when it holds a comma, a quote or a newline.
 std::string csv_field(const std::string& text);
+// A number in a study's CSV: 10 significant digits, "nan" for NaN.
+std::string csv_number(double x);
 
 // Calls body(k) for every k in [0, count), on min(jobs, count) threads of this process (this
 // one included), each set to `threads_per_job` OpenMP threads (0: the cores shared among the

@@ -54,6 +54,9 @@ double margin(const nlohmann::json& s) {
                                                 : std::nan("");
 }
 
+// The particle's largest penetration (bodies/penetration.hpp), NaN without one.
+double penetration(const nlohmann::json& s) { return number_or_nan(particle(s), "penetration"); }
+
 // The progress line of a search over several diameters: impacts done, the last outcome, and an
 // estimate of the time left from the bisection's run count per diameter.
 class Progress {
@@ -130,9 +133,18 @@ VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double 
     progress.impact(diameter, speed, verdict, simulate);
     return verdict == "bonded";
   };
+  // Bonding's activation is a penetration that grows steadily with the speed (docs/bonding.md,
+  // "Activation"): its margin at the bracket's ends guesses where the verdict turns.
+  const double critical = make_case(diameter, o.vmin).bonding.critical_penetration;
+  auto guide = [&](double lo, double hi) {
+    const double below = penetration(read_summary(impact_folder(o.out_dir, diameter, lo)));
+    const double above = penetration(read_summary(impact_folder(o.out_dir, diameter, hi)));
+    if (!(critical > 0.0 && below < critical && above > critical)) return std::nan("");
+    return lo + (hi - lo) * (critical - below) / (above - below);
+  };
   try {
     row.search = find_threshold(bonded, o.vmin, o.vmax, o.tol, o.max_runs, nullptr,
-                                ThresholdLimits{o.vmin, o.vmax});
+                                ThresholdLimits{o.vmin, o.vmax}, guide);
     row.status = to_string(row.search.status);
   } catch (const FailedRun& e) {
     row.status = e.what();
@@ -150,8 +162,6 @@ VcritRow search(const ImpactCaseMaker& make_case, const VcritOptions& o, double 
   }
   return row;
 }
-
-std::string csv_number(double x) { return std::isnan(x) ? "nan" : fmt::format("{:.10g}", x); }
 
 }  // namespace
 

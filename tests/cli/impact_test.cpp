@@ -48,31 +48,37 @@ case_file::Case written_case(const std::string& args) {
 TEST(ImpactSubstrate, ReproducesThesisTable53) {
   const double table[][2] = {{14, 30}, {18, 36}, {22, 44}, {26, 46}, {30, 50}};
   for (const auto& row : table) {
-    const cli::SubstrateSize s = cli::substrate_size(row[0] * 1e-6);
+    const cli::SubstrateSize s = cli::substrate_size(row[0] * 1e-6, cli::SetUp::Thesis);
     EXPECT_DOUBLE_EQ(s.diameter, row[1] * 1e-6) << row[0];
     EXPECT_DOUBLE_EQ(s.height, 10e-6) << row[0];
     // Diameters a unit conversion leaves a hair off the table's (3e-5 / 1e-6 = 30.000000000000004)
     // are still the table's.
-    EXPECT_DOUBLE_EQ(cli::substrate_size(std::nextafter(row[0] * 1e-6, 1.0)).diameter,
-                     row[1] * 1e-6);
+    EXPECT_DOUBLE_EQ(
+        cli::substrate_size(std::nextafter(row[0] * 1e-6, 1.0), cli::SetUp::Thesis).diameter,
+        row[1] * 1e-6);
   }
 }
 
 TEST(ImpactSubstrate, InterpolatesInsideTheTableAndScalesOutside) {
-  EXPECT_DOUBLE_EQ(cli::substrate_size(20e-6).diameter, 40e-6);  // between 36 and 44
-  EXPECT_DOUBLE_EQ(cli::substrate_size(28e-6).diameter, 48e-6);  // between 46 and 50
+  EXPECT_DOUBLE_EQ(cli::substrate_size(20e-6, cli::SetUp::Thesis).diameter,
+                   40e-6);  // between 36 and 44
+  EXPECT_DOUBLE_EQ(cli::substrate_size(28e-6, cli::SetUp::Thesis).diameter,
+                   48e-6);  // between 46 and 50
   // Below 14 um the 14 um case scaled: 7 um -> 15 um; 4 um -> 8.57 -> 8.6 um (0.1 um up).
-  EXPECT_DOUBLE_EQ(cli::substrate_size(7e-6).diameter, 15e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6).diameter, 8.6e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6).height, 10e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(7e-6, cli::SetUp::Thesis).diameter, 15e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6, cli::SetUp::Thesis).diameter, 8.6e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6, cli::SetUp::Thesis).height, 10e-6);
   // Above 30 um: 2 d across, max(10 um, d/3) high.
-  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6).diameter, 90e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6).height, 15e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6).diameter, 76e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6).height, 12.7e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6, cli::SetUp::Thesis).diameter, 90e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6, cli::SetUp::Thesis).height, 15e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6, cli::SetUp::Thesis).diameter, 76e-6);
+  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6, cli::SetUp::Thesis).height, 12.7e-6);
 }
 
-TEST(Impact, WriteCaseGivesTheThesisGeometryAndPassesCheck) {
+// The default set-up is in proportion to the diameter (docs/impact.md, "The set-up"): 22 um at
+// 790 m/s on a 66 x 33 um cylinder, cells 22 / 40 um, the thesis' 14 um times x 22 / 14 and the
+// end a window after 2 d / v.
+TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
   const std::string dir = make_temp_dir("impact");
   const auto r = run_coldspray(kCase22 + " --write-case case.yaml", dir);
   ASSERT_EQ(r.status, 0) << r.output;
@@ -89,21 +95,54 @@ TEST(Impact, WriteCaseGivesTheThesisGeometryAndPassesCheck) {
   EXPECT_DOUBLE_EQ(c.bodies[0].velocity.z(), -790.0);
   EXPECT_DOUBLE_EQ(c.bodies[0].temperature, 298.0);
   const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
-  EXPECT_DOUBLE_EQ(substrate.radius, 22e-6);  // Table 5.3: 44 um across for 22 um
-  EXPECT_DOUBLE_EQ(substrate.height, 10e-6);
+  EXPECT_DOUBLE_EQ(substrate.radius, 44e-6);  // 4 d across
+  EXPECT_DOUBLE_EQ(substrate.height, 44e-6);  // 2 d high
   EXPECT_DOUBLE_EQ(substrate.base_center.z() + substrate.height, 0.0);
   EXPECT_EQ(c.bodies[1].absorbing.size(), 2u);
-  EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.7e-6);
-  for (const auto& b : c.bodies) EXPECT_DOUBLE_EQ(b.spacing, 0.175e-6);
+  EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.55e-6);  // D/40
+  for (const auto& b : c.bodies) EXPECT_DOUBLE_EQ(b.spacing, 0.1375e-6);
   EXPECT_EQ(c.solver.geometry, case_file::Geometry::Axisymmetric);
-  EXPECT_DOUBLE_EQ(c.solver.end_time, 80e-9);
+  // Times are written in ns to 12 significant digits (cli/case_text.hpp).
+  const double scale = 22.0 / 14.0, end = 20e-9 * scale + 2.0 * 22e-6 / 790.0;
+  EXPECT_NEAR(c.metrics.verdict_window, 20e-9 * scale, 1e-11 * 20e-9 * scale);
+  EXPECT_NEAR(c.solver.end_time, end, 1e-11 * end);
+  EXPECT_NEAR(c.output.history_interval, 0.5e-9 * scale, 1e-11 * 0.5e-9 * scale);
+  EXPECT_NEAR(c.output.snapshot_interval, 10e-9 * scale, 1e-11 * 10e-9 * scale);
   EXPECT_EQ(c.contact.normal_body, "substrate");
-  // Energy bonding with the schema's parameters (the thesis' calibration, §5.1.4).
+  // Energy bonding with the schema's parameters (the project's calibration).
   case_file::Bonding energy;
   energy.model = case_file::BondingModel::Energy;
   EXPECT_EQ(c.bonding, energy);
+}
+
+// --setup thesis: thesis Table 5.3's substrate, the 0.7/0.175 um grid and 80 ns; --resolution
+// sets the cells per diameter of the similar set-up.
+TEST(Impact, TheThesisSetUpAndTheResolution) {
+  const case_file::Case c = written_case(kCase22 + " --setup thesis");
+  const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
+  EXPECT_DOUBLE_EQ(substrate.radius, 22e-6);  // Table 5.3: 44 um across for 22 um
+  EXPECT_DOUBLE_EQ(substrate.height, 10e-6);
+  EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.7e-6);
+  for (const auto& b : c.bodies) EXPECT_DOUBLE_EQ(b.spacing, 0.175e-6);
+  EXPECT_DOUBLE_EQ(c.solver.end_time, 80e-9);
+  EXPECT_DOUBLE_EQ(c.metrics.verdict_window, 20e-9);
   EXPECT_DOUBLE_EQ(c.output.history_interval, 0.5e-9);
   EXPECT_DOUBLE_EQ(c.output.snapshot_interval, 10e-9);
+
+  const case_file::Case fine = written_case(kCase22 + " --resolution D/80");
+  EXPECT_DOUBLE_EQ(fine.grid->cell_size, 22e-6 / 80.0);
+  EXPECT_DOUBLE_EQ(fine.bodies[0].spacing, 22e-6 / 320.0);
+  const std::string dir = make_temp_dir("impact-resolution");
+  for (const std::string bad :
+       {"--resolution 40", "--resolution D/1", "--resolution D/40um", "--resolution 0.7um/0.175um",
+        "--resolution D/40 --grid 1um/0.25um", "--solver peridynamics --resolution D/40"}) {
+    const auto r = run_coldspray(kCase22 + " " + bad + " --write-case case.yaml", dir);
+    EXPECT_EQ(r.status, 2) << bad << "\n" << r.output;
+    EXPECT_NE(r.output.find(bad.find("--grid") != std::string::npos ? "not both" : "--resolution"),
+              std::string::npos)
+        << bad << "\n"
+        << r.output;
+  }
 }
 
 TEST(Impact, OptionsReachTheCase) {
@@ -127,7 +166,8 @@ TEST(Impact, OptionsReachTheCase) {
 }
 
 TEST(Impact, ThreeDIsAQuarterModelOnSymmetryPlanes) {
-  const case_file::Case c = written_case(kCase22 + " --geometry 3d --grid 1um/0.25um");
+  const case_file::Case c =
+      written_case(kCase22 + " --geometry 3d --grid 1um/0.25um --setup thesis");
   EXPECT_EQ(c.solver.geometry, case_file::Geometry::ThreeD);
   ASSERT_TRUE(c.grid->min.has_value());
   EXPECT_EQ(c.grid->min->x(), 0.0);
@@ -140,23 +180,38 @@ TEST(Impact, ThreeDIsAQuarterModelOnSymmetryPlanes) {
   EXPECT_NEAR(c.grid->min->z(), -26e-6, 1e-12);
   EXPECT_NEAR(c.grid->max->z(), 38e-6, 1e-12);
 
-  const case_file::Case whole = written_case(kCase22 + " --geometry 3d --symmetry none");
+  // The similar set-up's 3D default is D/20 (impact_case.hpp), r-z's D/40.
+  const case_file::Case similar = written_case(kCase22 + " --geometry 3d");
+  EXPECT_DOUBLE_EQ(similar.grid->cell_size, 22e-6 / 20);
+  for (const auto& b : similar.bodies) EXPECT_DOUBLE_EQ(b.spacing, 22e-6 / 80);
+
+  const case_file::Case whole =
+      written_case(kCase22 + " --geometry 3d --symmetry none --setup thesis");
   EXPECT_FALSE(whole.grid->min.has_value());
   EXPECT_EQ(whole.grid->faces.at(case_file::GridFace::XMin), case_file::FaceCondition::Free);
 }
 
 // --coarsening L: the substrate's coarsened seeding (docs/mpm.md), fine within 0.65 D of the
-// axis and 0.36 D of its top; too many levels for the cell name the option; PD refuses it.
+// axis and 0.36 D of its top; by default 2 levels (to the cell) in the similar set-up, as many
+// as fit an absolute grid's cell, none in the thesis'; too many levels for the cell name the
+// option; PD refuses it.
 TEST(Impact, CoarseningReachesTheSubstrate) {
-  const case_file::Case c = written_case(kCase22 + " --geometry 3d --coarsening 2");
+  const case_file::Case c = written_case(kCase22 + " --geometry 3d --coarsening 1");
   ASSERT_TRUE(c.bodies[1].coarsening);
   EXPECT_FALSE(c.bodies[0].coarsening);
-  EXPECT_EQ(c.bodies[1].coarsening->levels, 2);
+  EXPECT_EQ(c.bodies[1].coarsening->levels, 1);
   const auto& fine = std::get<case_file::Cylinder>(c.bodies[1].coarsening->fine);
   EXPECT_NEAR(fine.radius, 0.65 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.height, 0.36 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.base_center.z(), -0.36 * 22e-6, 1e-12);
-  EXPECT_FALSE(written_case(kCase22).bodies[1].coarsening);
+  const case_file::Case similar = written_case(kCase22);
+  ASSERT_TRUE(similar.bodies[1].coarsening);
+  EXPECT_EQ(similar.bodies[1].coarsening->levels, 2);
+  const case_file::Case half = written_case(kCase22 + " --grid 1um/0.5um");
+  ASSERT_TRUE(half.bodies[1].coarsening);
+  EXPECT_EQ(half.bodies[1].coarsening->levels, 1);
+  EXPECT_FALSE(written_case(kCase22 + " --coarsening 0").bodies[1].coarsening);
+  EXPECT_FALSE(written_case(kCase22 + " --setup thesis").bodies[1].coarsening);
   const auto coarse = run_coldspray(kCase22 + " --coarsening 3");
   EXPECT_EQ(coarse.status, 2) << coarse.output;
   EXPECT_NE(coarse.output.find("--coarsening: key 'bodies.substrate.coarsening.levels'"),
@@ -342,22 +397,24 @@ TEST(Impact, TinyRunWritesTheSummaryAndPrintsTheVerdict) {
   EXPECT_FALSE(r.summary["bodies"]["substrate"].contains("verdict"));
 }
 
-// A 6 um particle bonding at once (G_c = 1 J/m^2): at 10 ns its 10 ns window still holds the
-// impact, and at 20 ns the particle, held by its bond, is still being pulled back (the window's
-// halves differ), so the run goes on two windows, to 30 ns, where it reads bonded, the margin
-// (threshold - mean) positive.
+// A 6 um particle bonding at once (G_c = 1 J/m^2, no activation needed, the thesis' model and
+// set-up): at 10 ns its 10 ns window still holds the impact, so the run goes on a window, to
+// 20 ns, where it reads bonded, the margin (threshold - mean) positive. (Before the absorbing
+// dashpots acted on the grid's velocity the particle was still being pulled back at 20 ns and
+// took a second window.)
 TEST(Impact, AnUndecidedRunIsExtendedAndReadsBonded) {
   const ImpactRun r = run_impact(
       "--material al-ptw --diameter 6um --velocity 800m/s --grid 0.5um/0.125um --Gc 1J/m^2 "
-      "--end-time 10ns --set metrics.verdict_window=10ns");
-  EXPECT_NE(r.output.find("verdict: BONDED after 2 extensions to 30 ns (mean separation speed "),
+      "--setup thesis --end-time 10ns --set metrics.verdict_window=10ns "
+      "--set bonding.critical_penetration=0");
+  EXPECT_NE(r.output.find("verdict: BONDED after 1 extension to 20 ns (mean separation speed "),
             std::string::npos)
       << r.output;
   ASSERT_TRUE(r.summary.is_object());
   const nlohmann::json& v = r.summary["bodies"]["particle"]["verdict"];
   EXPECT_EQ(r.summary["system"]["outcome"], "bonded");
-  EXPECT_EQ(r.summary["system"]["extensions"], 2);
-  EXPECT_NEAR(r.summary["time"].get<double>(), 30e-9, 1e-18);
+  EXPECT_EQ(r.summary["system"]["extensions"], 1);
+  EXPECT_NEAR(r.summary["time"].get<double>(), 20e-9, 1e-18);
   EXPECT_NEAR(v["window"].get<double>(), 10e-9, 1e-18);
   EXPECT_NEAR(v["margin"].get<double>(), 2.0 - v["separation_speed"].get<double>(), 1e-12);
   EXPECT_GT(v["margin"].get<double>(), 0.0);

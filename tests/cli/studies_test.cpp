@@ -3,9 +3,11 @@
 // input errors (exit 2 with FILE:LINE and the key).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/calibration_file.hpp"
@@ -30,13 +32,15 @@ std::size_t count_entries(const fs::path& folder) {
   return n;
 }
 
-// A 4 um particle on a 1 um grid for 3 ns with the thesis' energy parameters. At 3 ns nothing has
+// A 4 um particle on a 1 um grid for 3 ns with the thesis' energy parameters, model (no
+// activation) and set-up. At 3 ns nothing has
 // come to rest, so the verdict is read over the last 1 ns with a threshold of 50 m/s to make the
 // search bracket: from 200 m/s (no point bonds: rebounded) to 1200 m/s (bonded after two
 // extensions to 5 ns); the test is of the search's machinery, not of the physics.
 const std::string kVcrit =
     "vcrit --material al-ptw --diameters 4um --grid 1um/0.5um --end-time 3ns --vmin 200m/s "
     "--tol 100m/s --Gc 1503.74J/m^2 --Gc-rate 2.271J/m^2/us --threads-per-job 1 --out vc "
+    "--setup thesis --set bonding.critical_penetration=0 "
     "--set metrics.verdict_window=1ns --set metrics.bonded_separation_speed=50m/s";
 
 TEST(CliStudies, VcritWritesItsTableAndReusesItsRuns) {
@@ -144,6 +148,45 @@ TEST(CliStudies, CalibrateByTheVerdictLeavesUndecidedRunsOut) {
   EXPECT_NE(json.find("\"by\": \"verdict\""), std::string::npos) << json;
 }
 
+// `calibrates: critical-penetration` (docs/studies.md): two runs per size, each size's power law
+// p = p_c (v / v_c)^b, and the one critical penetration whose two predicted critical velocities
+// err equally and oppositely in ln v; a `parameters` section is refused for it.
+TEST(CliStudies, CalibratesTheActivationFromEachSizesPenetration) {
+  const std::string dir = make_temp_dir();
+  const std::string file = std::string(COLDSPRAY_TEST_DATA) + "/cli/activation-tiny.yaml";
+  const auto r = run_coldspray("calibrate '" + file + "' --out cal --quiet", dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("calibrated: critical_penetration = "), std::string::npos) << r.output;
+  const auto j = nlohmann::json::parse(read_text(fs::path(dir) / "cal" / "calibration.json"));
+  const auto& grid = j["grids"][0];
+  ASSERT_TRUE(grid["critical_penetration"].is_number()) << j.dump(2);
+  const double delta = grid["critical_penetration"].get<double>();
+  double errors[2];
+  for (int s = 0; s < 2; ++s) {
+    const auto& size = grid["sizes"][s];
+    const double p = size["penetration"].get<double>(), b = size["exponent"].get<double>();
+    const double v = size["velocity_ms"].get<double>();
+    EXPECT_GT(b, 0.3) << size.dump();
+    EXPECT_NEAR(size["predicted_vcrit_ms"].get<double>(), v * std::pow(delta / p, 1.0 / b),
+                1e-9 * v);
+    errors[s] = std::log(size["predicted_vcrit_ms"].get<double>() / v);
+  }
+  EXPECT_NEAR(errors[0], -errors[1], 1e-9);
+  const std::string runs = read_text(fs::path(dir) / "cal" / "runs.csv");
+  EXPECT_NE(runs.find("D/8,4um,4,980,ok,"), std::string::npos) << runs;
+  EXPECT_NE(runs.find("D/8,6um,6,969,ok,"), std::string::npos) << runs;
+
+  std::ofstream(fs::path(dir) / "bad.yaml")
+      << read_text(file)
+      << "parameters:\n  critical_energy: {from: 1 J/m^2, to: 2 J/m^2, count: 2}\n";
+  const auto bad = run_coldspray("calibrate bad.yaml --out bad", dir);
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("bad.yaml:10:3: key 'parameters': is for calibrates: "
+                            "bonding-parameters"),
+            std::string::npos)
+      << bad.output;
+}
+
 // The shipped calibration files read without error, and every run they would make is a valid
 // case (checked as `coldspray check` checks a case file), without running any.
 TEST(CliStudies, EveryExampleCalibrationMakesValidCases) {
@@ -153,13 +196,19 @@ TEST(CliStudies, EveryExampleCalibrationMakesValidCases) {
     if (entry.path().extension() != ".yaml") continue;
     ++files;
     const CalibrationFile file = read_calibration_file(entry.path().string());
+    if (file.activation) {  // calibrates: critical-penetration, two speeds per grid and size
+      const auto runs = studies::activation_runs(activation_plan(file), "out");
+      EXPECT_EQ(runs.size(), 2 * file.plan.grids.size() * file.plan.sizes.size()) << entry.path();
+      for (const auto& run : runs) EXPECT_NO_THROW(activation_case(file, run)) << run.folder;
+      continue;
+    }
     const auto runs = studies::calibration_runs(file.plan, "out");
     EXPECT_EQ(runs.size(), file.plan.grids.size() * file.plan.sizes.size() *
                                static_cast<std::size_t>(file.plan.x1.count * file.plan.x2.count))
         << entry.path();
     for (const auto& run : runs) EXPECT_NO_THROW(calibration_case(file, run)) << run.folder;
   }
-  EXPECT_GE(files, 2);
+  EXPECT_GE(files, 3);
 }
 
 // A calibration file's `debond` section is its cases' bonding.debond: the calibration can be run

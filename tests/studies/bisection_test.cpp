@@ -155,6 +155,35 @@ TEST(StudiesBisection, ReportsAConflictWithCachedResults) {
   EXPECT_EQ(r.predicate_calls, 1);
 }
 
+// A guide that knows where the threshold is cuts at it, kept 0.4 tol inside the bracket:
+// 500, 1000, then 783.4 (T) and 783.4 - 0.4 (F): width 0.4 <= 1 in 4 evaluations, against 11.
+TEST(StudiesBisection, AGuideCutsAtItsGuess) {
+  Bonds p;
+  auto exact = [](double, double) { return kThreshold; };
+  const ThresholdResult r = find_threshold(std::ref(p), 500.0, 1000.0, 1.0, 40, nullptr, {}, exact);
+  expect_brackets_threshold(r, 1.0);
+  EXPECT_EQ(r.predicate_calls, 4);
+  EXPECT_EQ(r.evaluations[2].value, kThreshold);
+  EXPECT_DOUBLE_EQ(r.evaluations[3].value, kThreshold - 0.4);
+}
+
+// A guide stuck at the bracket's low end would creep up by 0.4 tol a cut: after two cuts that
+// kept more than half the bracket, a midpoint cut, so at most three evaluations halve it (here 15
+// in all against bisection's 11; without the safeguard the creep would take over 700).
+TEST(StudiesBisection, AMidpointCutFollowsTwoSlowGuidedCuts) {
+  Bonds p;
+  auto creeping = [](double lo, double) { return lo; };
+  const ThresholdResult r =
+      find_threshold(std::ref(p), 500.0, 1000.0, 1.0, 60, nullptr, {}, creeping);
+  expect_brackets_threshold(r, 1.0);
+  EXPECT_EQ(r.predicate_calls, 15);
+  // No guess (NaN): the midpoint, as without a guide.
+  Bonds q;
+  auto none = [](double, double) { return std::nan(""); };
+  EXPECT_EQ(find_threshold(std::ref(q), 500.0, 1000.0, 1.0, 40, nullptr, {}, none).predicate_calls,
+            11);
+}
+
 TEST(StudiesBisection, RejectsBadArguments) {
   auto p = [](double v) { return v > 1.0; };
   EXPECT_THROW(find_threshold(p, 2.0, 1.0, 0.1, 10), std::invalid_argument);

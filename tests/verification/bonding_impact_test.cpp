@@ -44,6 +44,51 @@ TEST(Verification, WithoutBondingTheParticleRebounds) {
   EXPECT_EQ(run.summary.extensions, 0);
 }
 
+// Bonding's activation (docs/bonding.md, "Activation"). Before a pair is activated no bond
+// forms, whatever the law's D_bond (here G_c = 1 J/m^2, which bonds every contacted point at
+// once): the impact moves as without a bonding model, to the bit.
+TEST(Verification, BeforeItsActivationAnImpactMovesAsWithoutBonding) {
+  const CaseRun off = run_verification_case("bonding-impact", {{"bonding.model", "none"}});
+  const CaseRun held = run_verification_case(
+      "bonding-impact",
+      {{"bonding.critical_energy", "1 J/m^2"}, {"bonding.critical_penetration", "0.99"}});
+  const auto& m = held.summary.bodies.at(0).impact;
+  EXPECT_GT(m.pbcp, 50.0);  // the law ran: its D_bond reached 1 over most of the contact
+  EXPECT_EQ(m.bonded_area, 0.0);
+  EXPECT_EQ(held.summary.bodies.at(0).verdict->outcome, metrics::Outcome::Rebounded);
+  const Table a = off.history(), b = held.history();
+  for (const char* column : {"time", "kinetic", "elastic", "plastic_work", "particle.vz",
+                             "substrate.vz", "particle.penetration"})
+    EXPECT_EQ(a.values(column), b.values(column)) << column;
+}
+
+// Unbonded, the impact penetrates p (its summary's largest penetration): with the critical share
+// just above p the pair is never activated and the particle rebounds with no bond; just below, it
+// is activated before the compression ends and stays, bonded.
+TEST(Verification, APairBondsOnceItsImpactPenetratesTheCriticalShare) {
+  const CaseRun first = run_verification_case(
+      "bonding-impact", {{"bonding.critical_penetration", "0.99"}, {"solver.end_time", "20 ns"}});
+  const double p = first.summary.bodies.at(0).impact.penetration;
+  std::printf("penetration %.5f, compression ended at %.2f ns\n", p,
+              first.summary.bodies.at(0).impact.penetration_peak_time * 1e9);
+  ASSERT_GT(p, 0.2);
+  ASSERT_LT(p, 0.6);
+  for (const double factor : {1.02, 0.98}) {
+    const CaseRun run = run_verification_case(
+        "bonding-impact", {{"bonding.critical_energy", "1 J/m^2"},
+                           {"bonding.critical_penetration", std::to_string(factor * p)}});
+    const auto& particle = run.summary.bodies.at(0);
+    if (factor > 1.0)  // never activated: the unbonded impact
+      EXPECT_EQ(particle.impact.penetration, p);
+    else  // bonded from just before the compression ended
+      EXPECT_NEAR(particle.impact.penetration, p, 0.01 * p);
+    EXPECT_EQ(particle.verdict->outcome,
+              factor > 1.0 ? metrics::Outcome::Rebounded : metrics::Outcome::Bonded)
+        << factor;
+    EXPECT_EQ(particle.impact.bonded_area > 0.0, factor < 1.0) << factor;
+  }
+}
+
 // Run for 20 ns, the last 20 ns hold the impact itself (in at -800 m/s, then stopped): undecided,
 // so the run goes on one window, to 40 ns, where the particle, bonded, rings with the small
 // substrate (its absorbing faces are close), and the verdict reads it bonded.
