@@ -19,12 +19,14 @@ void prepare_grip(Bodies& s, const std::optional<case_file::Grip>& grip);
 // ends, then all of it.
 Eigen::Vector3d grip_velocity_at(const Bodies& s, double t);
 
-// Sets every point at rest and grips the body's points whose projection on the grip's side lies
-// in the last `fraction` of the body's range, which then move at the grip's velocity. Where a
+// Sets every point at rest and grips the points of the body's splat (the piece that hangs
+// together, bodies/splat_piece.hpp; not drops it shed) whose projection on the grip's side lies
+// in the last `fraction` of the splat's range, which then move at the grip's velocity. Where a
 // point of another body lies within the box those points span (a splat's jetted rim folded up
-// over the crater's lip), the grip would drag it along through contact: only the points within
-// the body's initial radius of its axis are gripped then, and if the box of those still holds
-// one, InputError (key grip.fraction).
+// over the crater's lip), the grip would drag it along through contact: only the splat's points
+// within the body's initial radius of its axis, in the last `fraction` of their own range, are
+// gripped then, and if the box of those still holds one, or there are none, InputError (key
+// grip.fraction).
 void take_grip(Bodies& s, const case_file::Grip& grip);
 
 }  // namespace coldspray::bodies

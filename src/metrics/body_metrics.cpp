@@ -5,7 +5,7 @@
 
 namespace coldspray::metrics {
 
-std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s) {
+std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s, SplatExtent extent) {
   const bodies::Points& P = s.points;
   const std::size_t bodies = s.bodies.size();
   std::vector<BodyMetrics> out;
@@ -38,7 +38,7 @@ std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s) {
       for (std::size_t o = 0; o < bodies; ++o)
         for (int d = 0; d < 3; ++d)
           m.contact_force[d] += s.contact_impulse[b * bodies + o][d] / s.dt;
-    m.impact = impact_measures(s, b);
+    m.impact = impact_measures(s, b, extent);
     m.departed = r.departed;
     out.push_back(std::move(m));
   }

@@ -30,7 +30,8 @@ struct BodyMetrics {
   std::optional<Verdict> verdict;
 };
 
-// In index order: independent of the thread count.
-std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s);
+// In index order: independent of the thread count. `extent`: whether the splats' extent (the
+// flattening ratio) is measured, for a summary, or skipped, for a history row.
+std::vector<BodyMetrics> body_metrics(const bodies::Bodies& s, SplatExtent extent);
 
 }  // namespace coldspray::metrics

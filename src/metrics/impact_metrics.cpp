@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "bodies/point_area.hpp"
+#include "bodies/splat_piece.hpp"
 
 namespace coldspray::metrics {
 
@@ -59,7 +60,7 @@ double touching_area(const bodies::Bodies& s, std::size_t body) {
   return area * whole_body_factor(s, r);
 }
 
-ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
+ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body, SplatExtent extent) {
   const bodies::Points& P = s.points;
   const bodies::BodyRange& r = s.bodies[body];
   ImpactMeasures m;
@@ -85,6 +86,10 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   // Jetting is judged in the frame that moves with the body along the axis, so that a particle's
   // rebound (or any motion of the whole body along z) is not taken for a jet.
   const double body_vz = momentum_z / mass;
+  // The splat's extent leaves out drops the body shed (bodies/splat_piece.hpp).
+  const std::vector<char> piece = extent == SplatExtent::Measured && m.moving
+                                      ? bodies::splat_piece(P, r)
+                                      : std::vector<char>(r.end - r.begin, 1);
   double jetted = 0.0, touched = 0.0, bonded = 0.0, bond_sum = 0.0, radius = 0.0;
   std::size_t touched_points = 0;
   m.bonded_area_with.assign(s.bodies.size(), 0.0);
@@ -96,7 +101,7 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
         std::hypot(P.velocity[0][p], P.velocity[1][p], P.velocity[2][p] - body_vz);
     if (relative_speed > s.impact_metrics.rest_speed_limit && outward)
       jetted += P.mass[p];
-    else
+    else if (piece[p - r.begin])
       radius = std::max(radius, radial);
     if (P.surface[p] && P.initial_z[p] > top - 0.75 * r.spacing)
       m.crater_depth = std::max(m.crater_depth, P.initial_z[p] - P.position[2][p]);
@@ -114,7 +119,8 @@ ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body) {
   m.bonded_area = rest.bonded_area;
   m.contact_area *= whole_body_factor(s, r);
   m.jetted_fraction = (jetted + r.departed.mass) / (mass + r.departed.mass);
-  m.flattening_ratio = (2.0 * radius + r.spacing) / r.initial_diameter;
+  m.flattening_ratio =
+      extent == SplatExtent::Measured ? (2.0 * radius + r.spacing) / r.initial_diameter : kNaN;
   m.penetration = r.penetration.size > 0.0 ? r.penetration.largest : kNaN;
   m.penetration_peak_time = r.penetration.peak >= 0.0 ? r.penetration.peak : kNaN;
   m.abp = touched_points > 0 ? bond_sum / static_cast<double>(touched_points) : 0.0;

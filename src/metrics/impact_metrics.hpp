@@ -28,7 +28,9 @@ struct ImpactMeasures {
   // Deepest sinking of the points that started in the body's top layer, m (the crater of a
   // substrate).
   double crater_depth = 0.0;
-  // Diameter across the axis of the body's points that are not jetted, over that at t = 0.
+  // Diameter across the axis of the body's points that are not jetted, over that at t = 0; of a
+  // body that moved, only its splat's points (bodies/splat_piece.hpp), not drops it shed. NaN
+  // where not measured (SplatExtent::Skipped).
   double flattening_ratio = 0.0;
   // The largest penetration since first contact over the body's size (bodies/penetration.hpp):
   // bonding's activation. NaN for a body that started at rest.
@@ -45,7 +47,11 @@ struct ImpactMeasures {
   bool moving = false;  // started with a z velocity: cor and the verdict apply
 };
 
-ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body);
+// Whether impact_measures finds the splat's extent (the flattening ratio), which takes a search
+// for the piece of the body that hangs together: once for a summary, not for every history row.
+enum class SplatExtent { Measured, Skipped };
+
+ImpactMeasures impact_measures(const bodies::Bodies& s, std::size_t body, SplatExtent extent);
 
 // The PBCP of eq 5.1 over all the bodies' contacted points, as thesis Table 5.5 reports it for a
 // multi-particle system: 100 sum bonded_mass / sum contacted_mass, %; 0 where nothing touched.

@@ -51,7 +51,8 @@ InterfaceAreas interface_areas(const case_file::Case& c, const std::filesystem::
         InterfaceAreas a;
         // The footprint's diameter: the flattening ratio's 2 r + h = ratio x initial diameter.
         const double d =
-            metrics::impact_measures(s, body).flattening_ratio * s.bodies[body].initial_diameter;
+            metrics::impact_measures(s, body, metrics::SplatExtent::Measured).flattening_ratio *
+            s.bodies[body].initial_diameter;
         a.projected = std::numbers::pi * d * d / 4.0;
         a.mirror_plane = s.bodies[body].mirror_plane;
         a.axisymmetric = s.geometry == case_file::Geometry::Axisymmetric;

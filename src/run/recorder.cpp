@@ -88,7 +88,7 @@ void Recorder::after_step(const bodies::Bodies& s, bool last) {
 
 void Recorder::rows(const bodies::Bodies& s, const metrics::EnergyBudget& e) {
   history_due_.done(s.time);
-  history_.record(s.time, e, metrics::body_metrics(s));
+  history_.record(s.time, e, metrics::body_metrics(s, metrics::SplatExtent::Skipped));
   contact_history_.record(s);
   probes_.record(s);
   last_row_time_ = s.time;
@@ -115,7 +115,7 @@ Summary Recorder::finish(const bodies::Bodies& s, const std::string& status) {
                                         static_cast<double>(s.points.size()) / summary_.wall_seconds
                                   : 0.0;
   summary_.energy = metrics::energy_budget(s);
-  summary_.bodies = metrics::body_metrics(s);
+  summary_.bodies = metrics::body_metrics(s, metrics::SplatExtent::Measured);
   const std::vector<std::optional<metrics::Verdict>> verdicts = verdict_.verdicts();
   for (std::size_t b = 0; b < summary_.bodies.size(); ++b) summary_.bodies[b].verdict = verdicts[b];
   write_summary_json(summary_, out_ / "summary.json");

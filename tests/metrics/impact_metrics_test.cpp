@@ -58,7 +58,7 @@ bodies::Bodies six_points() {
 
 TEST(ImpactMetrics, CountsByHand) {
   const bodies::Bodies s = six_points();
-  const ImpactMeasures m = impact_measures(s, 0);
+  const ImpactMeasures m = impact_measures(s, 0, SplatExtent::Measured);
   // D_bond > 0 at points 0, 1, 3, 4; >= 1 at 0, 3, 4: 3 of 4.
   EXPECT_NEAR(m.pbcp, 75.0, 1e-12);
   // ABP over the five touched points: (1.5 + 0.4 + 0 + 1 + 2) / 5.
@@ -122,7 +122,7 @@ bodies::Bodies three_bodies() {
 TEST(ImpactMetrics, BondedAreaByPartnerAndTheSystemsPbcp) {
   bodies::Bodies s = three_bodies();
   std::vector<ImpactMeasures> m;
-  for (std::size_t b = 0; b < 3; ++b) m.push_back(impact_measures(s, b));
+  for (std::size_t b = 0; b < 3; ++b) m.push_back(impact_measures(s, b, SplatExtent::Measured));
   // Points of volume 1e-18 m^3 stand for (1e-18)^(2/3) = 1e-12 m^2.
   const double expected[3][3] = {{0.0, 1e-12, 0.0}, {1e-12, 0.0, 1e-12}, {0.0, 1e-12, 0.0}};
   for (std::size_t b = 0; b < 3; ++b) {
@@ -138,7 +138,7 @@ TEST(ImpactMetrics, BondedAreaByPartnerAndTheSystemsPbcp) {
   // A body cut at a symmetry plane counts twice its points: the substrate's 1 of 2 become 2 of 4,
   // so the system has 5 of 9.
   s.bodies[2].mirror_plane[0] = 0.0;
-  m[2] = impact_measures(s, 2);
+  m[2] = impact_measures(s, 2, SplatExtent::Measured);
   EXPECT_NEAR(m[2].bonded_area_with[1], 2e-12, 1e-24);
   EXPECT_NEAR(system_pbcp(m), 500.0 / 9.0, 1e-12);
   EXPECT_EQ(system_pbcp({}), 0.0);
@@ -150,7 +150,7 @@ TEST(ImpactMetrics, PointsThatLeftTheGridCountAsJetted) {
   bodies::Bodies s = six_points();
   s.bodies[0].departed.points = 2;
   s.bodies[0].departed.mass = 2e-15;
-  const ImpactMeasures m = impact_measures(s, 0);
+  const ImpactMeasures m = impact_measures(s, 0, SplatExtent::Measured);
   // Point 4 and the two departed points, of 6 + 2 points of 1e-15 kg.
   EXPECT_NEAR(m.jetted_fraction, 3.0 / 8.0, 1e-15);
   EXPECT_NEAR(m.v_rest, 0.8, 1e-12);
@@ -165,14 +165,14 @@ TEST(ImpactMetrics, AReboundIsNotAJet) {
   for (std::size_t p = 0; p < 6; ++p) s.points.velocity[2][p] += 100.0;
   s.points.velocity[0][0] = -1.0;  // x = -1 um, left of the axis at x = 0.25 um: outward
   s.points.velocity[0][1] = 1.0;   // x = 1 um: outward
-  const ImpactMeasures m = impact_measures(s, 0);
+  const ImpactMeasures m = impact_measures(s, 0, SplatExtent::Measured);
   EXPECT_NEAR(m.jetted_fraction, 1.0 / 6.0, 1e-15);
 }
 
 TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
   bodies::Bodies s = six_points();
   s.bodies[0].initial_velocity = {0.0, 0.0, 0.0};
-  const ImpactMeasures m = impact_measures(s, 0);
+  const ImpactMeasures m = impact_measures(s, 0, SplatExtent::Measured);
   EXPECT_TRUE(std::isnan(m.cor));
   EXPECT_FALSE(m.moving);
 }
@@ -182,7 +182,7 @@ TEST(ImpactMetrics, ABodyAtRestHasNoRestitution) {
 TEST(ImpactMetrics, AQuarterModelMeasuresTheWholeBody) {
   bodies::Bodies s = six_points();
   s.bodies[0].mirror_plane = {0.0, 0.0};
-  const ImpactMeasures m = impact_measures(s, 0);
+  const ImpactMeasures m = impact_measures(s, 0, SplatExtent::Measured);
   EXPECT_NEAR(m.contact_area, 4 * 5e-12, 1e-24);
   EXPECT_NEAR(m.bonded_area, 4 * 2e-12, 1e-24);
   // Non-jetted points reach |x| = 1.5 um from the axis x = 0: (2 * 1.5 + 1) / 4 um. About the
@@ -193,7 +193,19 @@ TEST(ImpactMetrics, AQuarterModelMeasuresTheWholeBody) {
   s.geometry = case_file::Geometry::Axisymmetric;
   s.bodies[0].mirror_plane = {0.0, std::nullopt};
   for (std::size_t p = 0; p < 6; ++p) s.points.position[0][p] = std::abs(s.points.position[0][p]);
-  EXPECT_NEAR(impact_measures(s, 0).flattening_ratio, 1.0, 1e-12);
+  EXPECT_NEAR(impact_measures(s, 0, SplatExtent::Measured).flattening_ratio, 1.0, 1e-12);
+}
+
+// A drop the body shed far out (point 5, at rest, moved from x = -1.5 um to -10 um, 9 um from
+// the nearest point: beyond the 3 um link, bodies/splat_piece.hpp) is not part of the splat: the
+// non-jetted splat points reach |x| = 1 um from the quarter model's axis, (2 * 1 + 1) / 4 um,
+// where the drop would give (2 * 10 + 1) / 4. Skipped, the extent is not measured.
+TEST(ImpactMetrics, TheFlatteningRatioLeavesOutShedDrops) {
+  bodies::Bodies s = six_points();
+  s.bodies[0].mirror_plane = {0.0, 0.0};
+  s.points.position[0][5] = -10e-6;
+  EXPECT_NEAR(impact_measures(s, 0, SplatExtent::Measured).flattening_ratio, 0.75, 1e-12);
+  EXPECT_TRUE(std::isnan(impact_measures(s, 0, SplatExtent::Skipped).flattening_ratio));
 }
 
 // Eq 4.6 per body: sum D N / n_sp; eq 4.7: the mean of the two bodies.

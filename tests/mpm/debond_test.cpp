@@ -235,13 +235,29 @@ TEST(Grip, RefusesToTakeInAnotherBodysPoints) {
   std::size_t gripped = 0;
   for (const auto g : s.gripped) gripped += g;
   EXPECT_EQ(gripped, (s.bodies[0].end - s.bodies[0].begin) / 2);  // 6 layers: the upper 3
-  // An upper point reaching out beyond the disc's radius, as a splat's jetted rim, with a lower
-  // point under it (a crater's lip) in the box of the upper half: only the core within the
-  // disc's initial radius of its axis is gripped, without the rim point.
+  {
+    // A drop shed 20 um above the disc (a fast splat's, docs/validation/bond-strength.md) is not
+    // part of the splat: the grip still takes the disc's upper half, without the drop. Measured
+    // over every point, the upper half of the range would hold the drop alone.
+    State shed = build_state(c);
+    const std::size_t drop = shed.bodies[0].end - 1;
+    ASSERT_EQ(s.gripped[drop], 1);
+    shed.points.position[2][drop] += 20e-6;
+    bodies::prepare_grip(shed, grip);
+    bodies::take_grip(shed, grip);
+    std::size_t taken = 0;
+    for (const auto g : shed.gripped) taken += g;
+    EXPECT_EQ(shed.gripped[drop], 0);
+    EXPECT_EQ(taken, (shed.bodies[0].end - shed.bodies[0].begin) / 2 - 1);
+  }
+  // An upper point reaching out beyond the disc's 2 um radius, as a splat's jetted rim (0.64 um
+  // from the disc's edge, within the splat's 0.75 um link), with a lower point under it (a
+  // crater's lip) in the box of the upper half: only the core within the disc's initial radius
+  // of its axis is gripped, without the rim point.
   Points& P = s.points;
   const std::size_t rim = s.bodies[0].end - 1, lip = s.bodies[1].begin;
-  P.position[0][rim] = 5e-6, P.position[1][rim] = 0.0;
-  P.position[0][lip] = 4e-6, P.position[1][lip] = 0.0, P.position[2][lip] = 1e-6;
+  P.position[0][rim] = 2.5e-6, P.position[1][rim] = 0.0;
+  P.position[0][lip] = 2.25e-6, P.position[1][lip] = 0.0, P.position[2][lip] = 1e-6;
   bodies::take_grip(s, grip);
   EXPECT_EQ(s.gripped[rim], 0);
   gripped = 0;
@@ -249,6 +265,46 @@ TEST(Grip, RefusesToTakeInAnotherBodysPoints) {
   EXPECT_EQ(gripped, (s.bodies[0].end - s.bodies[0].begin) / 2 - 1);
   // A point of the lower disc among the upper one's core: the grip would drag it along.
   P.position[0][lip] = 0.0;
+  try {
+    bodies::take_grip(s, grip);
+    FAIL() << "took the grip";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "grip.fraction");
+  }
+}
+
+// A flat splat whose rim rises above its centre (22 um at 1300 m/s, docs/validation/
+// bond-strength.md): the upper disc's points beyond 1 um of the axis lifted by 0.75 um (3
+// layers), its initial radius taken as 1 um, a lower point at the rim in the upper half's box.
+// The core's share is of the core's own extent: the inner column's upper 3 of 6 layers (z from
+// 0.75 um), where the last half of the whole splat's extent (from 1.125 um) would hold 2. With
+// no point within the initial radius, the grip takes none: an error.
+TEST(Grip, TheCoresShareIsOfTheCoresOwnExtent) {
+  const case_file::Case c = discs("3d");
+  State s = build_state(c);
+  Points& P = s.points;
+  s.bodies[0].initial_diameter = 2e-6;
+  std::size_t inner = 0;
+  for (std::size_t i = s.bodies[0].begin; i < s.bodies[0].end; ++i) {
+    if (std::hypot(P.position[0][i], P.position[1][i]) < 1e-6)
+      ++inner;
+    else
+      P.position[2][i] += 0.75e-6;
+  }
+  const std::size_t lip = s.bodies[1].begin;
+  P.position[0][lip] = 1.5e-6, P.position[1][lip] = 0.0, P.position[2][lip] = 1.2e-6;
+  const case_file::Grip grip{"upper", 0.5, {0.0, 0.0, 1.0}, case_file::Vec3::Zero(), 0.0};
+  bodies::prepare_grip(s, grip);
+  bodies::take_grip(s, grip);
+  std::size_t gripped = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    gripped += s.gripped[i];
+    if (s.gripped[i]) {
+      EXPECT_GT(P.position[2][i], 0.75e-6);
+    }
+  }
+  EXPECT_EQ(gripped, inner / 2);
+  s.bodies[0].initial_diameter = 1e-9;
   try {
     bodies::take_grip(s, grip);
     FAIL() << "took the grip";
