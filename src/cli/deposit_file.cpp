@@ -87,8 +87,8 @@ void fields(IO& io, ParticlesEntry& p) {
 
 struct SubstrateEntry {
   std::string material;
-  std::optional<double>
-      thickness;  // unset: the size-similar set-up's, kSimilarSubstrateHeight typical diameters
+  // Unset: the size-similar set-up's, kSimilarSubstrateHeight typical diameters.
+  std::optional<double> thickness;
   std::optional<double> margin;
   double temperature = 298.0;
   int coarsening = 0;
