@@ -8,7 +8,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev libfmt-dev libeigen3-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format python3 python3-matplotlib python3-numpy
-  libopenmpi-dev openmpi-bin libhdf5-dev
+  libopenmpi-dev openmpi-bin libhdf5-dev zlib1g-dev
 )
 
 missing=()

@@ -10,6 +10,7 @@
 #include "cli/thread_count.hpp"
 #include "studies/calibration.hpp"
 #include "studies/mpi_session.hpp"
+#include "studies/study_lock.hpp"
 
 namespace coldspray::cli {
 
@@ -142,6 +143,7 @@ void add_calibrate(CLI::App& app) {
     o.progress = !opt->quiet;
     o.rank = mpi.rank();
     o.ranks = mpi.size();
+    const auto lock = studies::lock_study_folder(o.out_dir, mpi);
     calibrate_file(file, o, mpi);
   });
 }

@@ -189,6 +189,13 @@ void report_deposit(const DepositFile& file, const studies::Placement& placement
   print_results_location(report.out_dir, std::cout);
 }
 
+// What continues an interrupted deposit: its own command, which also writes deposit.json.
+std::string deposit_restart_command(const std::string& deposit_file,
+                                    const std::filesystem::path& folder) {
+  return fmt::format("coldspray deposit {} --restart {}", shell_quoted(deposit_file),
+                     shell_quoted(folder.string()));
+}
+
 }  // namespace
 
 void add_deposit(CLI::App& app) {
@@ -208,9 +215,11 @@ void add_deposit(CLI::App& app) {
   add_run_flags(*sub, opt->run);
   sub->callback([opt] {
     const DepositFile file = read_deposit_file(opt->path);
+    if (!opt->write_case.empty()) io::require_writable(opt->write_case, "--write-case");
     const studies::Placement placement = place(file);
     if (!opt->restart.empty()) {
       const case_file::Case c = restart_case(opt->restart, opt->run);
+      opt->run.restart_command = deposit_restart_command(opt->path, opt->run.out_dir);
       check_same_particles(c, placement, opt->path);
       report_deposit(file, placement, c, run_and_report(c, opt->run, std::cout));
       return;
@@ -219,12 +228,12 @@ void add_deposit(CLI::App& app) {
     const case_file::Case c = case_file::load_case_text(opt->path + " (its generated case)", g.yaml,
                                                         g.origins, parse_overrides(opt->run.sets));
     if (!opt->write_case.empty()) {
-      io::require_replaceable(opt->write_case, "--write-case");
       io::write_atomically(opt->write_case, [&](std::ostream& out) { out << g.yaml; });
       std::cout << fmt::format("wrote {} (run it with: coldspray run {})\n", opt->write_case,
                                shell_quoted(opt->write_case));
       return;
     }
+    opt->run.restart_command = deposit_restart_command(opt->path, run_folder(c, opt->run));
     report_deposit(file, placement, c, run_and_report(c, opt->run, std::cout));
   });
 }

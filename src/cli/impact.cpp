@@ -56,7 +56,7 @@ std::string case_file_text(const GeneratedCase& g,
 }
 
 void write_case(const std::string& path, const std::string& text) {
-  io::require_replaceable(path, "--write-case");
+  io::require_writable(path, "--write-case");
   io::write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 

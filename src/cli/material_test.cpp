@@ -49,7 +49,7 @@ void add_material_test(CLI::App& app) {
     loading.isothermal = opt->isothermal;
     loading.steps = opt->steps;
     const materials::Material material = case_file::resolve_material(opt->material);
-    io::require_replaceable(opt->out, "--out");  // before the work, not after it
+    io::require_writable(opt->out, "--out");  // before the work, not after it
 
     std::vector<material_test::Sample> samples;
     samples.reserve(static_cast<std::size_t>(std::max(opt->steps, 0)) + 1);

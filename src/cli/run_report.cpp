@@ -10,9 +10,10 @@
 #include "core/error.hpp"
 #include "run/checkpoints.hpp"
 #include "run/run.hpp"
-#include "run/run_folder.hpp"
 
 namespace coldspray::cli {
+
+namespace fs = std::filesystem;
 
 void add_run_flags(CLI::App& sub, RunFlags& flags) {
   sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)");
@@ -36,25 +37,31 @@ case_file::Case restart_case(const std::string& run_or_checkpoint, RunFlags& fla
     throw InputError("--restart", "",
                      "continues a run as it was: --set and --out do not apply to it");
   flags.restart_from = run::find_checkpoint(run_or_checkpoint);
+  if (fs::absolute(flags.restart_from).parent_path().filename() != "checkpoints")
+    throw InputError("--restart", "",
+                     fmt::format("'{}' is not in a run folder's checkpoints/: a run continues in "
+                                 "the folder that wrote it",
+                                 flags.restart_from.string()));
   flags.out_dir = flags.restart_from.parent_path().parent_path().string();
+  flags.lock = std::make_shared<io::FolderLock>(flags.out_dir, "--restart");
   return run::checkpoint_case(flags.restart_from);
+}
+
+std::filesystem::path run_folder(const case_file::Case& c, const RunFlags& flags) {
+  return flags.out_dir.empty() ? "out/" + c.name : flags.out_dir;
 }
 
 Report run_and_report(const case_file::Case& c, const RunFlags& flags, std::ostream& out) {
   if (flags.threads > 0) omp_set_num_threads(flags.threads);
-  print_case_summary(c, out);
   run::RunOptions options;
-  options.out_dir = flags.out_dir.empty() ? "out/" + c.name : flags.out_dir;
+  options.out_dir = run_folder(c, flags);
+  print_case_summary(c, out);
+  options.restart_command = flags.restart_command;
   options.progress = !flags.quiet;
   options.restart_from = flags.restart_from;
   options.initial_state = flags.initial_state;
-  // (A restarted run continues its own folder's results.)
-  if (const auto previous = run::previous_run_result(options.out_dir);
-      previous && !flags.overwrite && flags.restart_from.empty())
-    throw InputError("--out", "",
-                     fmt::format("'{}' holds a previous run's results ({}); pass --overwrite to "
-                                 "replace them, or choose another folder",
-                                 options.out_dir.string(), previous->string()));
+  options.refuse_previous_results = !flags.overwrite;
+  options.lock = flags.lock;
   const run::Summary s = run::run_case(c, options);
   out << fmt::format(
       "done: {} steps to t = {:.4g} ns in {:.1f} s on {} threads ({:.3g} particle-steps/s)\n"

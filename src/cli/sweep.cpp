@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/thread_count.hpp"
 #include "studies/mpi_session.hpp"
+#include "studies/study_lock.hpp"
 
 namespace coldspray::cli {
 
@@ -59,6 +60,8 @@ void add_sweep(CLI::App& app) {
     options.progress = !opt->quiet;
     options.rank = mpi.rank();
     options.ranks = mpi.size();
+    studies::check_sweep_cases(opt->case_path, base, vary);
+    const auto lock = studies::lock_study_folder(options.out_dir, mpi);
     if (opt->pull_off) {
       studies::PullOffOptions pull;
       pull.fraction = opt->grip;

@@ -17,9 +17,9 @@
 #include "cli/thread_count.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
-#include "io/output_folder.hpp"
 #include "studies/critical_velocity.hpp"
 #include "studies/mpi_session.hpp"
+#include "studies/study_lock.hpp"
 
 namespace coldspray::cli {
 
@@ -112,8 +112,8 @@ void add_vcrit(CLI::App& app) {
       return case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
     };
 
-    io::make_output_folder(o.out_dir);
     const studies::MpiSession mpi;
+    const auto lock = studies::lock_study_folder(o.out_dir, mpi);
     o.rank = mpi.rank();
     o.ranks = mpi.size();
     std::vector<studies::VcritRow> rows = studies::find_critical_velocities(make_case, o);

@@ -21,9 +21,14 @@ class AppendedFile {
                Opening opening = Opening::Create);
   // Adds `text` at the end. Throws RunFault if it cannot.
   void append(std::string_view text);
-  // The file's length in bytes, and cutting it back to a length it had (the rows a restarted
-  // run writes again); InputError if it is shorter than that.
+  // The rows written so far on the disk (fsync), before a checkpoint records the length.
+  void sync() const;
+  // The file's length in bytes.
   std::uintmax_t length() const;
+  // Whether a restarted run can continue the file from `length`, a length it had: InputError
+  // naming the file unless it is a regular file at least that long whose first `length` bytes
+  // end a row. Then cutting it back to that length (the rows a restarted run writes again).
+  void check_resumable(std::uintmax_t length) const;
   void cut_to(std::uintmax_t length) const;
 
  private:

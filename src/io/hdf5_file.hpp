@@ -1,7 +1,13 @@
 // An HDF5 file of named datasets (Debian's libhdf5, C API): one-dimensional arrays of numbers,
 // two-dimensional ones (rows of fixed-size records, such as a 3x3 tensor per point) and
 // strings, each under a path such as "points/velocity_x" (groups created as needed). The
-// checkpoints (checkpoint/checkpoint.hpp) are such files, readable by h5dump and h5py.
+// checkpoints (run/checkpoints.hpp) are such files, readable by h5dump and h5py.
+//
+// HDF5 never touches the disk: a new file is built in memory (the core driver) and save()
+// writes its bytes sealed with a checksum (io/sealed_image.hpp) by an atomic, synced write; a
+// file read is read whole, its checksum checked, and opened from memory. So a full disk is one
+// failed write of ours, reported as such, and never a half-closed HDF5 file that the library's
+// exit handlers trip over; a damaged or cut file is refused before any dataset is read.
 #pragma once
 
 #include <hdf5.h>
@@ -30,7 +36,8 @@ hid_t hdf5_type() {
 class Hdf5File {
  public:
   enum class Mode { Create, Read };
-  // Create: a new file (an existing one is truncated); Read: an existing one. Throws RunFault
+  // Create: a new file in memory, for save() to write to `path`; Read: an existing one, which
+  // must be a regular file sealed by save() (InputError naming it otherwise). Throws RunFault
   // (Create) or InputError (Read) naming the file when HDF5 cannot.
   Hdf5File(const std::filesystem::path& path, Mode mode);
   ~Hdf5File();
@@ -58,6 +65,10 @@ class Hdf5File {
 
   const std::filesystem::path& path() const { return path_; }
 
+  // Writes a created file to its path: sealed, to a temporary file that is synced and renamed
+  // (io/atomic_file.hpp). RunFault if the write fails; the path is then left as it was.
+  void save();
+
  private:
   void write_raw(const std::string& name, hid_t type, const void* data, std::size_t rows,
                  std::size_t columns);
@@ -66,6 +77,7 @@ class Hdf5File {
   hid_t open_dataset(const std::string& name) const;
 
   std::filesystem::path path_;
+  std::vector<char> image_;  // a file read: its bytes, which HDF5 reads from memory
   hid_t file_ = -1;
 };
 

@@ -3,13 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include "case/load.hpp"
 #include "checkpoint/archive.hpp"
 #include "checkpoint/fields.hpp"
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 #include "mpm/departures.hpp"
 #include "run/run_folder.hpp"
@@ -44,26 +45,51 @@ void expect_solver(checkpoint::CheckpointReader& reader, const fs::path& path,
                      fmt::format("is a {} checkpoint, not {}", saved, method));
 }
 
+// InputError unless the checkpoint is one of the run in `rec`'s folder: its run id that of the
+// folder's run_id.txt and its case that of the folder's case.resolved.yaml.
+void expect_own_run(checkpoint::CheckpointReader& reader, const fs::path& path,
+                    const Recorder& rec) {
+  std::string id, text;
+  reader("run_id", id);
+  if (id != rec.run_id())
+    throw InputError(path.string(), "run_id",
+                     fmt::format("is run {}'s checkpoint, not that of the run in '{}' ({}): a "
+                                 "folder continues only from its own checkpoints",
+                                 id, rec.folder().string(), rec.run_id()));
+  reader("case", text);
+  std::ifstream in(rec.folder() / "case.resolved.yaml", std::ios::binary);
+  const std::string folder_case{std::istreambuf_iterator<char>(in),
+                                std::istreambuf_iterator<char>()};
+  if (text != folder_case)
+    throw InputError(path.string(), "case",
+                     fmt::format("differs from '{}': the folder's run is another case",
+                                 (rec.folder() / "case.resolved.yaml").string()));
+}
+
 }  // namespace
 
 template <class State>
 fs::path write_checkpoint(State& s, Recorder& rec, StepRule& rule) {
   const fs::path folder = rec.folder() / "checkpoints";
-  fs::create_directories(folder);
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw RunFault(fmt::format("cannot create '{}': {}", folder.string(), ec.message()));
   const fs::path path = folder / fmt::format("step_{:08d}.h5", s.step);
-  io::write_file_atomically(path, [&](const fs::path& temporary) {
-    io::Hdf5File file(temporary, io::Hdf5File::Mode::Create);
+  {
+    io::Hdf5File file(path, io::Hdf5File::Mode::Create);
     checkpoint::CheckpointWriter writer(file);
     int format = kCheckpointFormat;
-    std::string method = s.discretisation.method, text = rec.resolved_case();
+    std::string method = s.discretisation.method, text = rec.resolved_case(), id = rec.run_id();
     writer("format", format);
     writer("solver", method);
     writer("case", text);
+    writer("run_id", id);
     all_fields(writer, s, rec, rule);
-  });
+    file.save();
+  }
   const std::vector<fs::path> kept = step_files(folder, ".h5");
   const auto keep = static_cast<std::size_t>(rec.checkpoints().keep());
-  for (std::size_t k = 0; k + keep < kept.size(); ++k) fs::remove(kept[k]);
+  for (std::size_t k = 0; k + keep < kept.size(); ++k) fs::remove(kept[k], ec);
   return path;
 }
 
@@ -96,8 +122,10 @@ void read_checkpoint(const fs::path& path, State& s, Recorder& rec, StepRule& ru
   const io::Hdf5File file(path, io::Hdf5File::Mode::Read);
   checkpoint::CheckpointReader reader(file);
   expect_solver(reader, path, s.discretisation.method);
+  expect_own_run(reader, path, rec);
   all_fields(reader, s, rec, rule);
   fit_to_points(s);
+  rec.resume();  // the folder cut back to the checkpoint, once all of it was read
 }
 
 template <class State>

@@ -1,8 +1,10 @@
 // Checkpoint files of a run (docs/reliability.md, "Checkpoint and restart"): one HDF5 file per
 // checkpoint, RUN/checkpoints/step_NNNNNNNN.h5, holding the format version, the solver, the
-// resolved case, the state's fields (checkpoint/fields.hpp), the recorder's progress and the
-// step rule's end; written to a temporary file and renamed, so a reader (or a kill -9) never
-// meets half a checkpoint. A restarted run continues bit for bit as the uninterrupted one.
+// resolved case, the run's id (run/run_id.hpp), the state's fields (checkpoint/fields.hpp), the
+// recorder's progress and the step rule's end; sealed with a checksum (io/sealed_image.hpp),
+// written to a temporary file, synced and renamed, so a reader (or a kill -9) never meets half
+// a checkpoint, and a damaged one is refused. A restarted run continues bit for bit as the
+// uninterrupted one.
 #pragma once
 
 #include <filesystem>
@@ -14,8 +16,9 @@
 
 namespace coldspray::run {
 
-// The checkpoint format this build writes and reads. 2: PD's contact model 2 bonds and grip.
-inline constexpr int kCheckpointFormat = 2;
+// The checkpoint format this build writes and reads. 2: PD's contact model 2 bonds and grip;
+// 3: sealed with a checksum, and the run's id.
+inline constexpr int kCheckpointFormat = 3;
 
 // Writes the checkpoint of `s` (with `rec`'s and `rule`'s progress) into rec's folder, keeping
 // the last CheckpointPolicy::keep() of them; returns its path.
@@ -31,7 +34,9 @@ std::filesystem::path find_checkpoint(const std::filesystem::path& file_or_run);
 case_file::Case checkpoint_case(const std::filesystem::path& file);
 
 // Reads a checkpoint of this case into the state set up from it, and into the recorder and
-// step rule built for it.
+// step rule built for it, then resumes the recorder's folder (Recorder::resume). InputError
+// before anything in the folder changes if the checkpoint is not this folder's run's (its run id
+// and case), or a table cannot be continued.
 template <class State>
 void read_checkpoint(const std::filesystem::path& file, State& s, Recorder& rec, StepRule& rule);
 

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <functional>
 #include <sstream>
 
 #include "case/load.hpp"
@@ -13,6 +14,7 @@
 #include "metrics/energy.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
+#include "run/run_id.hpp"
 #include "run/snapshot.hpp"
 
 namespace coldspray::run {
@@ -26,10 +28,11 @@ std::string resolved_text(const case_file::Case& c) {
 }
 
 std::filesystem::path prepared(const std::filesystem::path& out, const std::string& resolved_case,
-                               io::Opening opening) {
+                               const std::string& run_id, io::Opening opening) {
   if (opening == io::Opening::Resume) return out;
   prepare_run_folder(out);
   io::write_atomically(out / "case.resolved.yaml", [&](std::ostream& os) { os << resolved_case; });
+  write_run_id(out, run_id);
   return out;
 }
 
@@ -39,8 +42,9 @@ Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::files
                    io::Opening opening)
     : out_(std::move(out)),
       resolved_case_(resolved_text(c)),
+      run_id_(opening == io::Opening::Resume ? read_run_id(out_) : new_run_id()),
       snapshot_interval_(c.output.snapshot_interval),
-      history_(s, prepared(out_, resolved_case_, opening) / "history.csv", opening),
+      history_(s, prepared(out_, resolved_case_, run_id_, opening) / "history.csv", opening),
       contact_history_(out_ / "contact.csv", opening),
       probes_(c.output.probes, s, out_ / "probes.csv", opening),
       pvd_(out_ / "snapshots.pvd"),
@@ -106,6 +110,10 @@ void Recorder::snapshot(const bodies::Bodies& s) {
 
 Summary Recorder::finish(const bodies::Bodies& s, const std::string& status) {
   snapshot(s);
+  return write_summary(s, status);
+}
+
+Summary Recorder::write_summary(const bodies::Bodies& s, const std::string& status) {
   summary_.status = status;
   summary_.steps = s.step;
   summary_.time = s.time;
@@ -126,6 +134,24 @@ std::vector<const io::AppendedFile*> Recorder::tables() const {
   std::vector<const io::AppendedFile*> t{&history_.file(), &contact_history_.file()};
   if (probes_.file()) t.push_back(probes_.file());
   return t;
+}
+
+void Recorder::resume() {
+  const std::vector<const io::AppendedFile*> t = tables();
+  if (t.size() != resumed_.lengths.size())
+    throw InputError(out_.string(), "",
+                     fmt::format("holds {} tables where its checkpoint recorded {}", t.size(),
+                                 resumed_.lengths.size()));
+  for (std::size_t k = 0; k < t.size(); ++k) t[k]->check_resumable(resumed_.lengths[k]);
+  const std::vector<std::string> files = split_lines(resumed_.files);
+  if (files.size() != resumed_.times.size())
+    throw InputError(out_.string(), "recorder/snapshots",
+                     "lists snapshot times and files that do not pair up");
+  // Checked: from here on the folder changes.
+  pvd_.assign(resumed_.times, files);
+  remove_unlisted_snapshots();
+  for (std::size_t k = 0; k < t.size(); ++k) t[k]->cut_to(resumed_.lengths[k]);
+  remove_interrupted_writes(out_);
 }
 
 void Recorder::remove_unlisted_snapshots() const {
@@ -150,17 +176,36 @@ std::vector<std::string> Recorder::split_lines(const std::string& text) {
 }
 
 void Recorder::end_with_fault(const bodies::Bodies& s, const RunFault& fault) {
-  write_last_rows(s);
-  finish(s, fmt::format("fault: {}", fault.what()));
-  throw RunFault(fmt::format("{} (last snapshot and summary in {})", fault.what(), out_.string()));
+  // Each of the last results on its own: the fault may be a full disk, where the snapshot fails
+  // but the summary, or the rows, still fit; the message keeps the fault and says what is lost.
+  std::vector<std::string> lost;
+  const auto attempt = [&](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const RunFault& e) {
+      lost.push_back(e.what());
+    }
+  };
+  attempt([&] { write_last_rows(s); });
+  attempt([&] { snapshot(s); });
+  attempt([&] { write_summary(s, fmt::format("fault: {}", fault.what())); });
+  if (lost.empty())
+    throw RunFault(
+        fmt::format("{} (last snapshot and summary in {})", fault.what(), out_.string()));
+  std::string unwritten;
+  for (const std::string& e : lost) unwritten += "; " + e;
+  throw RunFault(fmt::format("{} (in {}; its last results could not all be written{})",
+                             fault.what(), out_.string(), unwritten));
 }
 
 void Recorder::end_interrupted(const bodies::Bodies& s, int signal) {
   write_last_rows(s);
   finish(s, "interrupted");
-  throw Interrupted(signal, fmt::format("interrupted at t = {:.6g} ns, step {}; continue with: "
-                                        "coldspray run --restart {}",
-                                        s.time * 1e9, s.step, out_.string()));
+  throw Interrupted(
+      signal,
+      fmt::format("interrupted at t = {:.6g} ns, step {}; continue with: {}", s.time * 1e9, s.step,
+                  restart_command_.empty() ? "coldspray run --restart " + out_.string()
+                                           : restart_command_));
 }
 
 }  // namespace coldspray::run

@@ -64,21 +64,29 @@ class Recorder {
   Summary finish(const bodies::Bodies& s, const std::string& status);
   // The fault path, wherever a run stops on `fault` (run_to_end, a bond family's trunk): the
   // rows at the fault time if the tables do not end there yet, the last snapshot and the summary
-  // with the fault as status; then throws the RunFault naming the folder.
+  // with the fault as status, each tried on its own; then throws the RunFault naming the folder
+  // and, if some of them could not be written (a full disk), why.
   [[noreturn]] void end_with_fault(const bodies::Bodies& s, const RunFault& fault);
   // The same on SIGINT or SIGTERM (run/interrupt.hpp): the rows at the time it stopped, the last
   // snapshot and the summary with status "interrupted"; then throws Interrupted.
   [[noreturn]] void end_interrupted(const bodies::Bodies& s, int signal);
+
+  // The command end_interrupted() names to continue the run (empty: `coldspray run --restart
+  // FOLDER`).
+  void continue_with(std::string command) { restart_command_ = std::move(command); }
 
   const std::filesystem::path& folder() const { return out_; }
   // The case as case.resolved.yaml has it (what a checkpoint restarts from).
   const std::string& resolved_case() const { return resolved_case_; }
   CheckpointPolicy& checkpoints() { return checkpoints_; }
 
+  // This run's id (run/run_id.hpp): drawn for a new run, read from the folder for a restarted
+  // one.
+  const std::string& run_id() const { return run_id_; }
+
   // The recorder's progress in a checkpoint (checkpoint/archive.hpp): its schedules, the
   // verdict's series, the summary's counters, the snapshots listed in snapshots.pvd and the
-  // tables' lengths. Read back, the tables are cut to those lengths and the snapshots written
-  // since (or by an earlier run in the folder) removed: the restarted run writes them again.
+  // tables' lengths. Reading only takes them in: resume() then applies them to the folder.
   template <class Archive>
   void fields(Archive& a) {
     history_due_.fields(a, "recorder/history_due");
@@ -88,20 +96,24 @@ class Recorder {
     a("recorder/wall_seconds", summary_.wall_seconds);
     a("recorder/extensions", summary_.extensions);
     a("recorder/shared_steps", summary_.shared_steps);
-    std::vector<double> times = pvd_.times();
-    std::string files = join_lines(pvd_.files());
-    a("recorder/snapshots/times", times);
-    a("recorder/snapshots/files", files);
-    std::vector<std::uintmax_t> lengths;
-    for (const io::AppendedFile* t : tables()) lengths.push_back(t->length());
-    a("recorder/table_lengths", lengths);
-    if constexpr (Archive::kReading) {
-      pvd_.assign(times, split_lines(files));
-      remove_unlisted_snapshots();
-      const std::vector<const io::AppendedFile*> t = tables();
-      for (std::size_t k = 0; k < t.size() && k < lengths.size(); ++k) t[k]->cut_to(lengths[k]);
+    if constexpr (!Archive::kReading) {
+      resumed_.times = pvd_.times();
+      resumed_.files = join_lines(pvd_.files());
+      resumed_.lengths.clear();
+      for (const io::AppendedFile* t : tables()) {
+        t->sync();
+        resumed_.lengths.push_back(t->length());
+      }
     }
+    a("recorder/snapshots/times", resumed_.times);
+    a("recorder/snapshots/files", resumed_.files);
+    a("recorder/table_lengths", resumed_.lengths);
   }
+  // After a checkpoint was read: checks that every table is there and can be cut back to the
+  // length the checkpoint recorded (InputError naming the table, before anything is changed),
+  // then cuts them, removes the snapshots written since (or by an earlier run in the folder)
+  // and what writes killed midway left: the restarted run writes them again.
+  void resume();
 
  private:
   // The fault checks (every kFaultCheckStride steps and on the last), rows (always on the last
@@ -110,6 +122,7 @@ class Recorder {
     bool checks, rows, snapshot;
   };
   Due falling_due(const bodies::Bodies& s, bool last) const;
+  Summary write_summary(const bodies::Bodies& s, const std::string& status);
   void rows(const bodies::Bodies& s, const metrics::EnergyBudget& e);
   void snapshot(const bodies::Bodies& s);
   std::vector<const io::AppendedFile*> tables() const;
@@ -117,8 +130,18 @@ class Recorder {
   static std::string join_lines(const std::vector<std::string>& lines);
   static std::vector<std::string> split_lines(const std::string& text);
 
+  // What a checkpoint records of the folder (fields()).
+  struct FolderProgress {
+    std::vector<double> times;            // s; the snapshots listed in snapshots.pvd
+    std::string files;                    // their files, a line each
+    std::vector<std::uintmax_t> lengths;  // bytes; of tables()
+  };
+
   std::filesystem::path out_;
   std::string resolved_case_;
+  std::string run_id_;
+  std::string restart_command_;
+  FolderProgress resumed_;
   double snapshot_interval_;
   HistoryWriter history_;
   ContactHistoryWriter contact_history_;

@@ -9,10 +9,12 @@
 
 #include "bodies/grip.hpp"
 #include "core/error.hpp"
+#include "io/output_folder.hpp"
 #include "mpm/stepper.hpp"
 #include "pd/stepper.hpp"
 #include "run/checkpoints.hpp"
 #include "run/interrupt.hpp"
+#include "run/run_folder.hpp"
 
 namespace coldspray::run {
 
@@ -91,10 +93,28 @@ void take_grip(bodies::Bodies& s, const case_file::Case& c) {
   if (c.grip) bodies::take_grip(s, *c.grip);
 }
 
+// The folder for a run, held: created and locked (if the caller did not) and, for a new run,
+// free of a previous run's results if the options refuse them.
+std::shared_ptr<io::FolderLock> hold_folder(const RunOptions& options) {
+  std::shared_ptr<io::FolderLock> lock = options.lock;
+  if (!lock) {
+    io::make_output_folder(options.out_dir);
+    lock = std::make_shared<io::FolderLock>(options.out_dir, "--out");
+  }
+  if (const auto previous = previous_run_result(options.out_dir);
+      previous && options.refuse_previous_results && options.restart_from.empty())
+    throw InputError("--out", "",
+                     fmt::format("'{}' holds a previous run's results ({}); pass --overwrite to "
+                                 "replace them, or choose another folder",
+                                 options.out_dir.string(), previous->string()));
+  return lock;
+}
+
 }  // namespace
 
 Summary run_case(const case_file::Case& c, const RunOptions& options) {
   SolverState state = build_solver_state(c);  // InputError before anything is written
+  std::shared_ptr<io::FolderLock> lock;
   return std::visit(
       [&](auto& s) {
         const auto begin = Clock::now();
@@ -102,14 +122,18 @@ Summary run_case(const case_file::Case& c, const RunOptions& options) {
           // The undeformed state sets the rule's fixed dt and the recorder's t = 0 references;
           // then the checkpoint moves both, and the state, to where it was written.
           StepRule rule(c, s);
+          lock = hold_folder(options);
           Recorder rec(c, s, options.out_dir, io::Opening::Resume);
+          rec.continue_with(options.restart_command);
           read_checkpoint(options.restart_from, s, rec, rule);
           rec.checkpoints().enable();
           return run_to_end(s, rule, rec, options.progress);
         }
         if (!options.initial_state.empty()) load_initial_state(options.initial_state, s);
         take_grip(s, c);
+        lock = hold_folder(options);
         Recorder rec(c, s, options.out_dir);
+        rec.continue_with(options.restart_command);
         rec.checkpoints().enable();
         rec.start(s);
         rec.add_wall(std::chrono::duration<double>(Clock::now() - begin).count());

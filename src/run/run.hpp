@@ -2,8 +2,11 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
+#include <string>
 
 #include "case/case.hpp"
+#include "io/folder_lock.hpp"
 #include "run/recorder.hpp"
 #include "run/solver.hpp"
 #include "run/step_rule.hpp"
@@ -20,15 +23,25 @@ struct RunOptions {
   // A checkpoint whose state (of another case with the same bodies) this case starts from, at
   // t = 0 (run/checkpoints.hpp, load_initial_state); empty: the case's own initial state.
   std::filesystem::path initial_state;
+  // The command an interrupted run tells the user to continue it with; empty: `coldspray run
+  // --restart OUT_DIR`.
+  std::string restart_command;
+  // InputError if out_dir holds a previous run's results (the command line's guard, off with
+  // --overwrite; a restart continues its own); otherwise the run replaces them.
+  bool refuse_previous_results = false;
+  // out_dir's lock (io/folder_lock.hpp) if the caller took it already (a restart, before it read
+  // the checkpoint); else run_case takes it once the case is set up.
+  std::shared_ptr<io::FolderLock> lock;
 };
 
 // Runs the case and writes its results into options.out_dir: case.resolved.yaml, summary.json,
 // history.csv, contact.csv, probes.csv (with probes), snapshots/*.vtu and snapshots.pvd, and
 // checkpoints/step_*.h5 as output.checkpoint_* asks and at the end. Throws InputError before
-// writing anything if the case's geometry is invalid; on a fault during the run, writes a last
-// snapshot, a checkpoint and a summary with the fault as status, then throws RunFault; on
-// SIGINT or SIGTERM (run/interrupt.hpp), a checkpoint, the last rows and a summary with status
-// "interrupted", then throws Interrupted.
+// writing anything if the case's geometry is invalid, and before changing the folder if another
+// process holds it or it holds a previous run's results that options refuse; on a fault during the
+// run, writes a last snapshot, a checkpoint and a summary with the fault as status, then throws
+// RunFault; on SIGINT or SIGTERM (run/interrupt.hpp), a checkpoint, the last rows and a summary
+// with status "interrupted", then throws Interrupted.
 Summary run_case(const case_file::Case& c, const RunOptions& options);
 
 // Where a run picks up: at the start of a step, or, in MPM, halfway through one, at the contact

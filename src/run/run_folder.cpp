@@ -6,7 +6,9 @@
 #include <utility>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "run/run_id.hpp"
 
 namespace coldspray::run {
 
@@ -15,9 +17,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // What the recorder writes beside the snapshots folder; the last is written last.
-constexpr std::array<std::string_view, 6> kRunFiles = {"case.resolved.yaml", "history.csv",
-                                                       "contact.csv",        "probes.csv",
-                                                       "snapshots.pvd",      "summary.json"};
+constexpr std::array<std::string_view, 7> kRunFiles = {
+    "case.resolved.yaml", kRunIdFile,      "history.csv", "contact.csv",
+    "probes.csv",         "snapshots.pvd", "summary.json"};
 
 // The files it numbers by step: snapshots (Recorder::snapshot) and checkpoints
 // (run/checkpoints.hpp).
@@ -54,6 +56,12 @@ void prepare_run_folder(const fs::path& folder) {
   for (std::string_view name : kRunFiles) fs::remove(folder / name);
   for (const auto& [dir, extension] : kStepFiles)
     for (const fs::path& p : step_files(folder / dir, extension)) fs::remove(p);
+  remove_interrupted_writes(folder);
+}
+
+void remove_interrupted_writes(const fs::path& folder) {
+  for (const char* dir : {"", "snapshots", "checkpoints"})
+    io::remove_stale_temporaries(folder / dir);
 }
 
 }  // namespace coldspray::run

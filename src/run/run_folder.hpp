@@ -19,8 +19,12 @@ std::vector<std::filesystem::path> step_files(const std::filesystem::path& dir,
 // snapshots.pvd, a snapshot, ...): the folder holds a previous run's results.
 std::optional<std::filesystem::path> previous_run_result(const std::filesystem::path& folder);
 
+// Removes the temporary files of writes killed midway (io::remove_stale_temporaries) from a run
+// folder and its snapshots and checkpoints.
+void remove_interrupted_writes(const std::filesystem::path& folder);
+
 // Makes `folder` a writable folder (io/make_output_folder: InputError if it cannot be) and removes
-// a previous run's results from it, leaving any other file alone.
+// a previous run's results and interrupted writes from it, leaving any other file alone.
 void prepare_run_folder(const std::filesystem::path& folder);
 
 }  // namespace coldspray::run

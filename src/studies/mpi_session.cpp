@@ -42,4 +42,15 @@ void MpiSession::barrier() const {
 #endif
 }
 
+std::string MpiSession::from_rank0(std::string text) const {
+#ifdef COLDSPRAY_HAVE_MPI
+  if (!initialised_) return text;
+  unsigned long long size = text.size();
+  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+  text.resize(size);
+  if (size > 0) MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, MPI_COMM_WORLD);
+#endif
+  return text;
+}
+
 }  // namespace coldspray::studies

@@ -3,6 +3,8 @@
 // otherwise, or in a build without MPI, the process is rank 0 of 1 and MPI is never touched.
 #pragma once
 
+#include <string>
+
 namespace coldspray::studies {
 
 class MpiSession {
@@ -16,6 +18,8 @@ class MpiSession {
   int size() const { return size_; }
   // Waits for every rank (no-op without MPI).
   void barrier() const;
+  // Rank 0's `text` on every rank (collective; `text` itself without MPI).
+  std::string from_rank0(std::string text) const;
 
  private:
   int rank_ = 0;

@@ -199,7 +199,11 @@ PullOffResult pull_off(const PullOffOptions& o) {
   c.output.probes.clear();
   c.metrics.verdict_extensions = 0;
 
-  run::run_case(c, {o.out / "run", o.progress, {}, checkpoint});
+  run::RunOptions run;
+  run.out_dir = o.out / "run";
+  run.progress = o.progress;
+  run.initial_state = checkpoint;
+  run::run_case(c, run);
 
   // The force on the body from the others along the pull, with its sign turned: positive holds
   // it back.

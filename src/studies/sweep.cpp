@@ -33,10 +33,9 @@ namespace {
 bool run_one(const std::string& case_path, const std::vector<case_file::Override>& base,
              const SweepCase& sc, const fs::path& folder) {
   return run_in_folder(folder, [&] {
-    {
-      std::ofstream list(folder / "overrides.txt");
+    io::write_atomically(folder / "overrides.txt", [&](std::ostream& list) {
       for (const auto& o : sc.overrides) list << o.key << "=" << o.value << "\n";
-    }
+    });
     std::vector<case_file::Override> overrides = base;
     overrides.insert(overrides.end(), sc.overrides.begin(), sc.overrides.end());
     return case_file::load_case(case_path, overrides);
@@ -149,15 +148,18 @@ void write_sweep_csv(const fs::path& out_dir, const std::vector<Variation>& vary
   });
 }
 
-SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file::Override>& base,
-                      const std::vector<Variation>& vary, const SweepOptions& options) {
-  // Bad input stops the sweep before anything runs: the base case and every combination must
-  // load (an error names --set or --vary).
+void check_sweep_cases(const std::string& case_path, const std::vector<case_file::Override>& base,
+                       const std::vector<Variation>& vary) {
   for (const auto& overrides : combinations(vary)) {
     std::vector<case_file::Override> all = base;
     all.insert(all.end(), overrides.begin(), overrides.end());
     case_file::load_case(case_path, all);
   }
+}
+
+SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file::Override>& base,
+                      const std::vector<Variation>& vary, const SweepOptions& options) {
+  check_sweep_cases(case_path, base, vary);  // bad input stops the sweep before anything runs
   const std::vector<SweepCase> cases = sweep_cases(vary);
   io::make_output_folder(options.out_dir);  // InputError if it is a file, under one, unwritable
 

@@ -43,10 +43,16 @@ struct SweepCase {
 
 std::vector<SweepCase> sweep_cases(const std::vector<Variation>& vary);
 
-// Runs the cases of this rank not yet finished; writes DIR/sweep.csv (rank 0) after each case
-// and at the end, from the summaries on disk. A failing case is recorded and the sweep goes on.
-// With options.pull_off, then pulls off every finished case of this rank without a pull-off
-// summary yet; a failing pull-off leaves its message in the case's pull-off-error.txt.
+// Loads the base case and every combination: InputError (naming --set or --vary) for the first
+// that does not load.
+void check_sweep_cases(const std::string& case_path, const std::vector<case_file::Override>& base,
+                       const std::vector<Variation>& vary);
+
+// Runs the cases of this rank not yet finished (check_sweep_cases first); writes DIR/sweep.csv
+// (rank 0) after each case and at the end, from the summaries on disk. A failing case is recorded
+// and the sweep goes on. With options.pull_off, then pulls off every finished case of this rank
+// without a pull-off summary yet; a failing pull-off leaves its message in the case's
+// pull-off-error.txt.
 SweepCounts run_sweep(const std::string& case_path, const std::vector<case_file::Override>& base,
                       const std::vector<Variation>& vary, const SweepOptions& options);
 

@@ -1,11 +1,14 @@
 // `coldspray deposit` (docs/deposit.md): a small deposit run end to end, its report against its
 // own summary, the generated case reproducible from the seed, and the deposit files it refuses.
 #include <gtest/gtest.h>
+#include <signal.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <thread>
 
 #include "run_command.hpp"
 #include "temp_dir.hpp"
@@ -105,6 +108,33 @@ TEST(Deposit, ReportsEachParticleAndTheDeposit) {
 }
 
 // The same file writes the same case; another seed places the particles elsewhere.
+// An interrupted deposit names the command that continues it, `deposit FILE --restart RUN`,
+// which finishes the run and writes deposit.json (`run --restart` would not).
+TEST(Deposit, AnInterruptedDepositSaysHowToContinueIt) {
+  const fs::path dir = make_temp_dir("deposit");
+  const std::string file = write(dir, "small.yaml", kSmall);
+  const fs::path run = dir / "run", log = dir / "log.txt";
+  const pid_t pid = spawn_coldspray({"deposit", file, "--out", run.string(), "--threads", "1",
+                                     "--quiet", "--set", "output.checkpoint_interval=2ns"},
+                                    log.string());
+  bool checkpointed = false;
+  for (int k = 0; k < 60000 && !checkpointed; ++k) {
+    std::error_code ec;
+    checkpointed = !fs::is_empty(run / "checkpoints", ec) && !ec;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), 130);
+  ASSERT_TRUE(checkpointed);
+  const std::string said = read_text(log);
+  const std::string command = "coldspray deposit " + file + " --restart " + run.string();
+  EXPECT_TRUE(said.find("continue with: " + command) != std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(run / "deposit.json"));
+  const auto again = run_coldspray(command.substr(command.find(' ') + 1) + " --quiet");
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_TRUE(fs::exists(run / "deposit.json"));
+}
+
 TEST(Deposit, TheSeedFixesTheCase) {
   const fs::path dir = make_temp_dir("deposit");
   write(dir, "small.yaml", kSmall);

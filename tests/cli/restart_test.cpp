@@ -5,7 +5,6 @@
 // after kill -9 the run continues from its last checkpoint.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,8 +20,6 @@
 
 #include "run_command.hpp"
 #include "temp_dir.hpp"
-
-extern char** environ;
 
 namespace coldspray::testing {
 namespace {
@@ -43,11 +40,13 @@ nlohmann::json untimed_summary(const fs::path& run) {
   return j;
 }
 
-// The run's result files, relative to its folder: everything but its checkpoints.
+// The run's result files, relative to its folder: everything but its checkpoints and its id
+// (run_id.txt, drawn at random for each run).
 std::vector<fs::path> result_files(const fs::path& run) {
   std::vector<fs::path> files;
   for (const auto& e : fs::recursive_directory_iterator(run))
-    if (e.is_regular_file() && e.path().parent_path().filename() != "checkpoints")
+    if (e.is_regular_file() && e.path().parent_path().filename() != "checkpoints" &&
+        e.path().filename() != "run_id.txt")
       files.push_back(fs::relative(e.path(), run));
   std::sort(files.begin(), files.end());
   return files;
@@ -160,11 +159,18 @@ TEST(Restart, RefusesOverridesAndMissingCheckpoints) {
   EXPECT_NE(empty.output.find("holds no checkpoint"), std::string::npos) << empty.output;
   const auto sets = run_coldspray("run --restart '" + dir.string() + "' --set solver.cfl=0.1");
   EXPECT_EQ(sets.status, 2) << sets.output;
-  const fs::path not_hdf5 = dir / "step_00000001.h5";
+  const fs::path loose = dir / "step_00000001.h5";
+  std::ofstream(loose) << "text";
+  const auto outside = run_coldspray("run --restart '" + loose.string() + "'");
+  EXPECT_EQ(outside.status, 2) << outside.output;
+  EXPECT_NE(outside.output.find("is not in a run folder's checkpoints/"), std::string::npos)
+      << outside.output;
+  fs::create_directories(dir / "checkpoints");
+  const fs::path not_hdf5 = dir / "checkpoints" / "step_00000001.h5";
   std::ofstream(not_hdf5) << "text";
   const auto garbage = run_coldspray("run --restart '" + not_hdf5.string() + "'");
   EXPECT_EQ(garbage.status, 2) << garbage.output;
-  EXPECT_NE(garbage.output.find("not a readable HDF5 file"), std::string::npos) << garbage.output;
+  EXPECT_NE(garbage.output.find("has no checksum header"), std::string::npos) << garbage.output;
 }
 
 // The last line of a table.
@@ -212,17 +218,6 @@ TEST(Restart, AnotherCaseStartsFromACheckpointsState) {
   EXPECT_FALSE(fs::exists(dir / "finer"));
 }
 
-// Starts `coldspray ARGS...` in the background; returns its pid.
-pid_t spawn_coldspray(std::vector<std::string> args) {
-  args.insert(args.begin(), COLDSPRAY_BINARY);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  EXPECT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
-  return pid;
-}
-
 // Waits until `run` holds a checkpoint (or `pid` ended); returns whether one appeared.
 bool wait_for_checkpoint(const fs::path& run, pid_t pid) {
   for (int k = 0; k < 6000; ++k) {
@@ -231,12 +226,6 @@ bool wait_for_checkpoint(const fs::path& run, pid_t pid) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return false;
-}
-
-int exit_status(pid_t pid) {
-  int raw = 0;
-  waitpid(pid, &raw, 0);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
 }
 
 // The peridynamics quarter impact with a checkpoint every 0.5 ns of simulated time, to 6 ns

@@ -49,9 +49,13 @@ std::string contents(const fs::path& file) {
 // solo run writes and a family's members do not (docs/reliability.md).
 std::set<std::string> files_under(const fs::path& folder) {
   std::set<std::string> names;
-  for (const auto& entry : fs::recursive_directory_iterator(folder))
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    // Not results: a run's id (random) and the lock of a folder run_case held.
+    const std::string name = entry.path().filename().string();
+    if (name == "run_id.txt" || name == ".coldspray.lock") continue;
     if (entry.is_regular_file() && entry.path().parent_path().filename() != "checkpoints")
       names.insert(fs::relative(entry.path(), folder).string());
+  }
   return names;
 }
 
