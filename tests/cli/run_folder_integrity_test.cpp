@@ -188,8 +188,8 @@ TEST(RunFolderIntegrity, AFailedWriteIsAFaultThatLeavesNoPartialCheckpoint) {
 TEST(RunFolderIntegrity, ASecondProcessIsRefusedTheFolderNamingTheFirst) {
   const fs::path dir = make_temp_dir();
   const fs::path out = dir / "run";
-  // The peridynamics impact at D/25 spends seconds building its families: the folder is held
-  // from before that.
+  // The peridynamics impact at D/25 runs for minutes once its families are built (seconds): it
+  // holds the folder from the end of its set-up to its end.
   const pid_t first =
       spawn_coldspray({"impact", "--solver", "peridynamics", "--diameter", "30um", "--velocity",
                        "500m/s", "--spacing", "1.2um", "--quiet", "--out", out.string()});
