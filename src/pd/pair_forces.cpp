@@ -159,7 +159,7 @@ template <class Pass>
 void visit_blocks(State& s, Pass&& pass) {
   const std::size_t blocks = s.pairs.block.size() - 1;
   for (std::size_t colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (threaded(s))
     for (std::size_t k = colour; k < blocks; k += 2)
       visit_block(s, s.pairs.block[k], s.pairs.block[k + 1], pass);
   }
@@ -173,7 +173,7 @@ void pair_forces(State& s) {
   const bool along_flow = controlled && !s.control_displacement.empty();
   // The terms of eq 8 that hold only the point's own A, from the family's fixed sum
   // (pd/deformation.hpp).
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < n; ++i) {
     if (!s.advancing[s.neighbours.body[i]]) continue;
     s.pair_bonds[i] = s.piola_over_shape[i] * s.family_sums[i].bond;
@@ -188,18 +188,18 @@ void pair_forces(State& s) {
   });
   if (along_flow) {
     // D = [sum omega (slip / 2) (x) q V_j] M^-1 (pd/quadratic_fit.hpp), then the second pass.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
     for (std::size_t i = 0; i < n; ++i)
       if (s.advancing[s.neighbours.body[i]])
         s.slip_fit[i] = s.slip_fit[i].lazyProduct(s.moment_inverse[i]).eval();
     refresh_ghost_slip_fits(s);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
     for (std::size_t i = 0; i < s.slip_fit.size(); ++i) s.slipped[i] = !s.slip_fit[i].isZero(0.0);
     visit_blocks(s, [&](const BondWeights& weights, auto kind, std::size_t from, std::size_t to) {
       visit_slip_pairs<decltype(kind)::value>(s, weights, from, to);
     });
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < n; ++i)
     if (s.advancing[s.neighbours.body[i]])
       s.pair_control[i] *= s.body_bonds[s.neighbours.body[i]].control;

@@ -133,4 +133,17 @@ inline BondWeights bond_weights(const State& s, std::size_t b) {
   return {s.settings.influence, s.body_bonds[b].horizon};
 }
 
+// Models of fewer points step on one thread whatever --threads says: the `if` of every parallel
+// loop of the step (docs/reliability.md, "Threads on a loaded machine"). A step forks 17 teams;
+// a 252-point model holds ~25 us of work per loop, and while the other core is busy each fork
+// and join waits for a descheduled thread, up to libgomp's spin (300 000 pauses, 3-7 ms here):
+// its pull-off took 0.13 s on 2 threads idle, 0.15 s on 1, and 17-34 s on 2 threads beside two
+// busy loops (0.3-0.4 s on 1). Either way the loops run the same iterations in the same order.
+// The bound is low: idle, the 560-point spheres still step 1.6 times faster on 2 threads, the
+// 240-point ones 1.26 times on steps of 0.2 ms; below it a thread saves at most that fraction
+// of a millisecond a step.
+constexpr std::size_t kMinThreadedPoints = 500;
+
+inline bool threaded(const State& s) { return s.points.size() >= kMinThreadedPoints; }
+
 }  // namespace coldspray::pd

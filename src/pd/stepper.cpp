@@ -35,7 +35,7 @@ void kick(State& s, double t, const std::array<std::vector<double>, 3>* contact_
   bodies::Points& P = s.points;
   const double half = 0.5 * s.dt;
   const Eigen::Vector3d grip = bodies::grip_velocity_at(s, t);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!s.advancing[P.body[i]]) continue;
     for (int d = 0; d < 3; ++d) {
@@ -65,7 +65,7 @@ void kick(State& s, double t, const std::array<std::vector<double>, 3>* contact_
 // v^{n+1/2} through their substeps, as its own step would move it.
 void drift(State& s) {
   bodies::Points& P = s.points;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < P.size(); ++i)
     for (int d = 0; d < 3; ++d) {
       P.displacement[d][i] = s.dt * P.velocity[d][i];
@@ -133,12 +133,12 @@ double update_stress(State& s) {
                                "the time step, which follows it, would stall the run");
       };
       const std::size_t batches = bodies::batch_count(body);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
       for (std::size_t batch = 0; batch < batches; ++batch)
         bodies::update_batches(models, P, body, batch, batch + 1, kinematics_of, complete_point);
     });
     double max_speed = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : max_speed)
+#pragma omp parallel for schedule(static) if (threaded(s)) reduction(max : max_speed)
     for (std::size_t i = body.begin; i < body.end; ++i) {
       const double speed =
           std::sqrt(P.velocity[0][i] * P.velocity[0][i] + P.velocity[1][i] * P.velocity[1][i] +
@@ -159,7 +159,7 @@ double update_stress(State& s) {
 void accelerate(State& s) {
   bodies::Points& P = s.points;
   pair_forces(s);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!s.advancing[P.body[i]]) continue;
     const ForceDensity f{s.pair_bonds[i].head<3>(), s.pair_control[i].head<3>(),
@@ -199,7 +199,7 @@ void accelerate(State& s) {
 // each step, always of one sign.)
 void book_works(State& s, bool book_contact = true) {
   bodies::Points& P = s.points;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!s.advancing[P.body[i]]) continue;
     double control = 0.0, contact = 0.0;
@@ -225,7 +225,7 @@ void book_works(State& s, bool book_contact = true) {
 void update_interface_bonds(State& s) {
   if (!s.contact.remembers_stretch) return;
   const Neighbours& N = s.neighbours;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < N.real; ++i)
     for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
       const std::size_t j = s.contact.other[c];
@@ -320,7 +320,7 @@ void subcycled_step(State& s, std::vector<std::uint8_t>& fast, int substeps) {
   // The slow bodies' points' contact impulse density over a part of the step (of each substep's
   // end force f, `weight` x f).
   auto add_slow_contact = [&](double weight, bool now) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
     for (std::size_t i = 0; i < P.size(); ++i) {
       if (fast[P.body[i]]) continue;
       const Eigen::Vector3d f = now ? contact_density(s, i)

@@ -43,7 +43,7 @@ void add_ghosts(State& s) {
 
 void refresh_ghost_motion(State& s) {
   Neighbours& N = s.neighbours;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t g = 0; g < s.ghosts.size(); ++g) {
     const Ghost& ghost = s.ghosts[g];
     const std::size_t j = N.real + g, i = ghost.source;
@@ -58,7 +58,7 @@ void refresh_ghost_motion(State& s) {
 }
 
 void refresh_ghost_tensors(State& s) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t g = 0; g < s.ghosts.size(); ++g) {
     const Ghost& ghost = s.ghosts[g];
     const Eigen::Matrix3d R = reflection(ghost.flips);
@@ -71,7 +71,7 @@ void refresh_ghost_tensors(State& s) {
 }
 
 void refresh_ghost_slip_fits(State& s) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t g = 0; g < s.ghosts.size(); ++g)
     s.slip_fit[s.neighbours.real + g] = mirrored(s.slip_fit[s.ghosts[g].source], s.ghosts[g].flips);
 }
@@ -79,7 +79,7 @@ void refresh_ghost_slip_fits(State& s) {
 void refresh_neighbours(State& s) {
   Neighbours& N = s.neighbours;
   const bodies::Points& P = s.points;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threaded(s))
   for (std::size_t i = 0; i < P.size(); ++i) {
     N.position[i] = {P.position[0][i], P.position[1][i], P.position[2][i], 0.0};
     N.velocity[i] = {P.velocity[0][i], P.velocity[1][i], P.velocity[2][i], 0.0};

@@ -6,8 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <string>
+#include <thread>
 
 #include "pd/bulk_fracture.hpp"
 #include "run_command.hpp"
@@ -23,6 +26,11 @@ const std::string kBlocks = std::string(COLDSPRAY_TEST_DATA) + "/cli/pd-bonded-b
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // The 36 bonds of the blocks' interface (tests/data/cli/pd-bonded-blocks.yaml), each between
@@ -66,6 +74,26 @@ TEST(PullOff, TheBondedBlocksNeedTheForceAndWorkOfTheirInterfaceBonds) {
   const Table curve = read_table((dir / "blocks-pull-off" / "pull_off.csv").string());
   EXPECT_LT(std::abs(curve.rows.front()[curve.column("force")]), 0.01 * peak);
   EXPECT_EQ(curve.rows.back()[curve.column("force")], 0.0);
+}
+
+// The same pull-off on 1 and 2 threads writes the same curve and summary, byte for byte (a model
+// this small steps on one thread either way, pd::threaded; issue 53 found its 2-thread run
+// taking over 30 s on a loaded machine, against 0.6 s on 1).
+TEST(PullOff, OneAndTwoThreadsGiveTheSameBits) {
+  if (std::thread::hardware_concurrency() < 2)
+    GTEST_SKIP() << "one processor: --threads 2 is refused";
+  const fs::path dir = make_temp_dir("pull-off");
+  ASSERT_EQ(run_coldspray("run '" + kBlocks + "' --out blocks --quiet", dir.string()).status, 0);
+  for (const std::string threads : {"1", "2"}) {
+    const auto r = run_coldspray(
+        "pull-off blocks --speed 1m/s --distance 0.1um --grip 1 --quiet "
+        "--threads " +
+            threads + " --out pulled-" + threads,
+        dir.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  for (const char* file : {"pull_off.csv", "summary.json"})
+    EXPECT_EQ(read_file(dir / "pulled-1" / file), read_file(dir / "pulled-2" / file)) << file;
 }
 
 // Shear pushes along x: the blocks (no symmetry plane) take it; a quarter model, whose plane x = 0
