@@ -33,7 +33,7 @@ struct CutPlane {
 };
 
 // Seeds every body of the case; throws InputError for a body with no points or bodies that
-// overlap at t = 0.
+// overlap at t = 0, Interrupted at SIGINT or SIGTERM (core/interrupt.hpp).
 std::vector<SeededBody> seed_bodies(const case_file::Case& c);
 
 // Cuts the seeded bodies at the planes, setting a body's mirror plane (x and y planes) where it

@@ -13,14 +13,16 @@ namespace coldspray::case_file {
 
 namespace {
 
-// Whether `node` is `tree` or lies under it. A loop over a stack, not a recursion: how deep a
-// tree may be is plain_yaml's and the --set key paths' business, not the call stack's.
-bool contains(const YAML::Node& tree, const YAML::Node& node) {
+// Calls `visit` on `tree` and every node under it, map keys included, until it returns true;
+// returns whether it did. A loop over a stack, not a recursion: how deep a tree may be is
+// plain_yaml's and the --set key paths' business, not the call stack's.
+template <class Visit>
+bool any_node(const YAML::Node& tree, Visit visit) {
   std::vector<YAML::Node> pending{tree};
   while (!pending.empty()) {
     const YAML::Node at = pending.back();
     pending.pop_back();
-    if (at.is(node)) return true;
+    if (visit(at)) return true;
     if (at.IsMap()) {
       for (const auto& entry : at) {
         pending.push_back(entry.first);
@@ -31,6 +33,11 @@ bool contains(const YAML::Node& tree, const YAML::Node& node) {
     }
   }
   return false;
+}
+
+// Whether `node` is `tree` or lies under it.
+bool contains(const YAML::Node& tree, const YAML::Node& node) {
+  return any_node(tree, [&](const YAML::Node& at) { return at.is(node); });
 }
 
 }  // namespace
@@ -53,12 +60,40 @@ Document Document::from_text(std::string name, std::string_view text) {
 
 void Document::mark_origin(const YAML::Node& node, std::string origin) {
   origins_.emplace_back(node, std::move(origin));
+  index_.clear();
+}
+
+std::size_t Document::PositionHash::operator()(const Position& p) const {
+  const auto [pos, line, column] = p;
+  return std::hash<long long>{}((static_cast<long long>(pos) << 32) ^
+                                (static_cast<long long>(line) << 16) ^ column);
+}
+
+Document::Position Document::position_of(const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  return {mark.pos, mark.line, mark.column};
+}
+
+const std::unordered_map<Document::Position, std::vector<std::size_t>, Document::PositionHash>&
+Document::index() const {
+  if (!index_.empty() || origins_.empty()) return index_;
+  for (std::size_t k = 0; k < origins_.size(); ++k)
+    any_node(origins_[k].first, [&](const YAML::Node& at) {
+      std::vector<std::size_t>& holders = index_[position_of(at)];
+      if (holders.empty() || holders.back() != k) holders.push_back(k);
+      return false;
+    });
+  return index_;
 }
 
 std::optional<std::string> Document::origin(const YAML::Node& node) const {
-  // Latest first: a later --set may have replaced part of what an earlier one created.
-  for (auto it = origins_.rbegin(); it != origins_.rend(); ++it) {
-    if (contains(it->first, node)) return it->second;
+  // A tree that holds the node holds a node at its position: only those origins can. Latest
+  // first: a later --set may have replaced part of what an earlier one created.
+  const auto& by_position = index();
+  const auto found = by_position.find(position_of(node));
+  if (found == by_position.end()) return std::nullopt;
+  for (auto k = found->second.rbegin(); k != found->second.rend(); ++k) {
+    if (contains(origins_[*k].first, node)) return origins_[*k].second;
   }
   return std::nullopt;
 }

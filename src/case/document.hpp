@@ -4,10 +4,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -22,7 +25,11 @@ class Document {
 
   const std::string& name() const { return name_; }
   const YAML::Node& root() const { return root_; }
-  YAML::Node& root() { return root_; }
+  // (The tree may then change: the origins' index is made again when next needed.)
+  YAML::Node& root() {
+    index_.clear();
+    return root_;
+  }
 
   // Records that `node` and everything under it came from `origin` (e.g. "--set solver.cfl").
   void mark_origin(const YAML::Node& node, std::string origin);
@@ -52,9 +59,23 @@ class Document {
   };
   Located locate(std::span<const std::string> path) const;
 
+  // The origins whose trees hold a node at each position in the text (a node has one position,
+  // nodes of other texts, --set values, may share it): the candidates origin() checks, latest
+  // last. A generated case marks an origin or more per body (`coldspray deposit`: 5 per
+  // particle), and checking every origin's tree for each of the case's nodes took 20 s for 1000
+  // particles, growing as their square. Made when first needed after the tree or its origins
+  // change.
+  using Position = std::tuple<int, int, int>;  // YAML::Mark's pos, line, column
+  struct PositionHash {
+    std::size_t operator()(const Position& p) const;
+  };
+  static Position position_of(const YAML::Node& node);
+  const std::unordered_map<Position, std::vector<std::size_t>, PositionHash>& index() const;
+
   std::string name_;
   YAML::Node root_;
   std::vector<std::pair<YAML::Node, std::string>> origins_;
+  mutable std::unordered_map<Position, std::vector<std::size_t>, PositionHash> index_;
 };
 
 // The index of the item of a list that `selector` names: the item whose `name` is selector, or

@@ -75,6 +75,16 @@ Case load_case_text(const std::string& name, std::string_view text,
   return read_case(doc, overrides);
 }
 
+Limits limits_of_overrides(const std::vector<Override>& overrides) {
+  Document doc = Document::from_text("--set", "{}");
+  for (const Override& o : overrides)
+    if (o.key == "limits" || o.key.starts_with("limits.")) apply_override(doc, o);
+  Limits limits;
+  if (const YAML::Node node = std::as_const(doc).root()["limits"])
+    Reader::read(doc, node, "limits", limits);
+  return limits;
+}
+
 std::string apply_overrides(const std::string& name, std::string_view text,
                             const std::vector<Override>& overrides) {
   Document doc = Document::from_text(name, text);

@@ -38,6 +38,11 @@ Case load_case_text(const std::string& name, std::string_view text,
                     const std::vector<ValueOrigin>& origins = {},
                     const std::vector<Override>& overrides = {});
 
+// The `limits` section the overrides give (`--set limits.KEY=VALUE`; the others are ignored),
+// read and checked as a case's: for a generator that sizes its case before it writes it
+// (`coldspray deposit`). InputError at "--set KEY" for a bad value.
+Limits limits_of_overrides(const std::vector<Override>& overrides);
+
 // YAML text with the overrides applied, re-emitted (comments are lost); InputError as load_case.
 std::string apply_overrides(const std::string& name, std::string_view text,
                             const std::vector<Override>& overrides);

@@ -83,7 +83,11 @@ double estimated_points(const Case& c, const Body& b) {
         plane.keep_above ? box.max[a] - plane.position : plane.position - box.min[a];
     kept *= std::clamp(part / size[a], 0.0, 1.0);
   }
-  return kept * e.volume / std::pow(b.spacing, 3);
+  return kept * lattice_points(b.shape, b.spacing);
+}
+
+double lattice_points(const Shape& shape, double spacing) {
+  return extent(shape).volume / std::pow(spacing, 3);
 }
 
 std::array<double, 3> estimated_grid_nodes(const Case& c) {

@@ -19,14 +19,8 @@ namespace {
 // Nodes along one axis, at most: GridLayout counts them in an int.
 constexpr double kMaxNodesPerAxis = 1 << 30;
 
-// A cap from limits.KEY, or from the available memory at `bytes` per item; with the words that
-// say which, for messages.
-struct Cap {
-  double value;
-  std::string source;
-};
-
-Cap cap_of(const std::optional<double>& given, const char* key, double bytes, const char* item) {
+SizeCap cap_of(const std::optional<double>& given, const char* key, double bytes,
+               const char* item) {
   if (given) return {*given, fmt::format("limits.{} = {:.3g}", key, *given)};
   const double memory = available_memory_bytes();
   const double value = std::floor(memory / bytes);
@@ -41,11 +35,7 @@ std::vector<std::string> size_key(const Body& b) {
 }
 
 void check_points(const Document& doc, const Case& c) {
-  const bool pd = c.solver.method == Method::Peridynamics;
-  const double bonds =
-      pd ? 4.0 / 3.0 * std::numbers::pi * std::pow(c.peridynamics->horizon_factor + 0.5, 3) : 0.0;
-  const double bytes = pd ? kPdBytesPerPoint + kPdBytesPerBond * bonds : kMpmBytesPerPoint;
-  const Cap cap = cap_of(c.limits.max_points, "max_points", bytes, "point");
+  const SizeCap cap = point_cap(c);
   double total = 0.0, most = -1.0;
   std::size_t largest = 0;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
@@ -70,7 +60,7 @@ void check_grid(const Document& doc, const Case& c) {
   if (c.solver.method != Method::Mpm) return;
   const std::array<double, 3> nodes = estimated_grid_nodes(c);
   const double total = nodes[0] * nodes[1] * nodes[2];
-  const Cap cap = cap_of(c.limits.max_grid_nodes, "max_grid_nodes", kGridBytesPerNode, "node");
+  const SizeCap cap = cap_of(c.limits.max_grid_nodes, "max_grid_nodes", kGridBytesPerNode, "node");
   const bool per_axis = !(std::max({nodes[0], nodes[1], nodes[2]}) <= kMaxNodesPerAxis);
   if (total <= cap.value && !per_axis) return;
   fail_at(
@@ -111,6 +101,14 @@ void check_interval(const Document& doc, const FirstStep& first, double interval
 }
 
 }  // namespace
+
+SizeCap point_cap(const Case& c) {
+  const bool pd = c.solver.method == Method::Peridynamics;
+  const double bonds =
+      pd ? 4.0 / 3.0 * std::numbers::pi * std::pow(c.peridynamics->horizon_factor + 0.5, 3) : 0.0;
+  const double bytes = pd ? kPdBytesPerPoint + kPdBytesPerBond * bonds : kMpmBytesPerPoint;
+  return cap_of(c.limits.max_points, "max_points", bytes, "point");
+}
 
 double available_memory_bytes() {
   std::ifstream meminfo("/proc/meminfo");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "case/case.hpp"
 #include "case/document.hpp"
@@ -25,6 +26,16 @@ inline constexpr double kPdBytesPerBond = 24.0;
 // The memory available to a run now: MemAvailable of /proc/meminfo, or else the free physical
 // pages; 4 GiB if neither can be read.
 double available_memory_bytes();
+
+// A cap from limits.KEY, or from the available memory at the cost of one item; with the words
+// that say which, for messages ("limits.max_points = 1e+06", "limits.max_points, by default
+// 2.41e+07: the 24.6 GB of memory available at 1024 bytes per point").
+struct SizeCap {
+  double value;
+  std::string source;
+};
+// limits.max_points of the case: for its solver, from the cost of a point of it.
+SizeCap point_cap(const Case& c);
 
 // InputError, located at the key to change, when the case's estimated points (in total),
 // grid nodes or steps (case/size_estimate.hpp) exceed limits.max_points, max_grid_nodes or

@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/deposit_case.hpp"
 #include "cli/deposit_file.hpp"
+#include "cli/deposit_limits.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
@@ -216,6 +217,8 @@ void add_deposit(CLI::App& app) {
   sub->callback([opt] {
     const DepositFile file = read_deposit_file(opt->path);
     if (!opt->write_case.empty()) io::require_writable(opt->write_case, "--write-case");
+    const std::vector<case_file::Override> sets = parse_overrides(opt->run.sets);
+    check_deposit_size(file, sets);
     const studies::Placement placement = place(file);
     if (!opt->restart.empty()) {
       const case_file::Case c = restart_case(opt->restart, opt->run);
@@ -225,8 +228,8 @@ void add_deposit(CLI::App& app) {
       return;
     }
     const GeneratedCase g = deposit_case(file, placement);
-    const case_file::Case c = case_file::load_case_text(opt->path + " (its generated case)", g.yaml,
-                                                        g.origins, parse_overrides(opt->run.sets));
+    const case_file::Case c =
+        case_file::load_case_text(opt->path + " (its generated case)", g.yaml, g.origins, sets);
     if (!opt->write_case.empty()) {
       io::write_atomically(opt->write_case, [&](std::ostream& out) { out << g.yaml; });
       std::cout << fmt::format("wrote {} (run it with: coldspray run {})\n", opt->write_case,

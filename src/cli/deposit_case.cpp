@@ -6,6 +6,7 @@
 
 #include "case/grid_domain.hpp"
 #include "cli/case_text.hpp"
+#include "core/interrupt.hpp"
 
 namespace coldspray::cli {
 
@@ -16,11 +17,18 @@ std::vector<std::string> particle_names(int count) {
   return names;
 }
 
+case_file::Box substrate_box(const DepositFile& file) {
+  const double half_x = 0.5 * file.plan.patch[0] + file.substrate_margin;
+  const double half_y = 0.5 * file.plan.patch[1] + file.substrate_margin;
+  return {case_file::Vec3(-half_x, -half_y, -file.substrate_thickness),
+          case_file::Vec3(half_x, half_y, 0.0)};
+}
+
 GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& placement) {
   const std::vector<studies::PlacedParticle>& particles = placement.particles;
   const std::vector<std::string> names = particle_names(static_cast<int>(particles.size()));
-  const double half_x = 0.5 * file.plan.patch[0] + file.substrate_margin;
-  const double half_y = 0.5 * file.plan.patch[1] + file.substrate_margin;
+  const case_file::Box substrate = substrate_box(file);
+  const double half_x = substrate.max.x(), half_y = substrate.max.y();
   double last_arrival = 0.0, largest = 0.0, highest = 0.0;
   for (const studies::PlacedParticle& p : particles) {
     last_arrival = std::max(last_arrival, p.arrival);
@@ -59,6 +67,7 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
             : file.description));
   line("bodies:");
   for (std::size_t i = 0; i < particles.size(); ++i) {
+    stop_set_up_if_interrupted("writing the case");
     const studies::PlacedParticle& p = particles[i];
     line(fmt::format("  - name: {}   # arrives at {:.4g} ns", names[i], p.arrival * 1e9));
     line("    material: " + file.material);
@@ -73,9 +82,8 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
   }
   line("  - name: substrate");
   line("    material: " + file.substrate_material);
-  line(fmt::format("    shape: {{type: box, min: {}, max: {}}}",
-                   vector_um(case_file::Vec3(-half_x, -half_y, -file.substrate_thickness)),
-                   vector_um(case_file::Vec3(half_x, half_y, 0.0))));
+  line(fmt::format("    shape: {{type: box, min: {}, max: {}}}", vector_um(substrate.min),
+                   vector_um(substrate.max)));
   line("    spacing: " + um(file.spacing));
   line(fmt::format("    temperature: {} K", number(file.substrate_temperature)));
   line("    absorbing: [bottom, side]   # a semi-infinite substrate (thesis §3.5.5)");

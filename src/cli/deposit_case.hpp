@@ -14,6 +14,10 @@ namespace coldspray::cli {
 // The particles' body names in arrival order: p1..pN, zero-padded to N's digits (p01..p10).
 std::vector<std::string> particle_names(int count);
 
+// The substrate's box: the patch and the file's margin on each side, `thickness` deep below its
+// top face z = 0.
+case_file::Box substrate_box(const DepositFile& file);
+
 // The substrate's top face is z = 0; it spans the patch and the file's margin on each side.
 // Bodies: the particles in arrival order, then the substrate (the highest body, as the thesis'
 // multi-particle rule has it, §5.2.3). Runs to the last arrival plus the file's settle time.

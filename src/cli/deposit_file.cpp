@@ -169,6 +169,7 @@ DepositFile read_deposit_file(const std::string& path) {
   DepositFile d;
   d.path = d.file_where = path;
   d.particles_where = where_of(doc, {"particles"});
+  d.count_where = where_of(doc, {"particles", "count"});
   d.patch_where = where_of(doc, {"patch"});
   d.grid_where = where_of(doc, {"grid"});
   d.substrate_where = root["substrate"] ? where_of(doc, {"substrate"}) : path;

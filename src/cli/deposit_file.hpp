@@ -28,7 +28,7 @@ struct DepositFile {
   studies::DepositPlan plan;
   // Where values were given, "FILE:LINE:COLUMN", for errors found after reading (placement)
   // and for the generated case's keys.
-  std::string particles_where, patch_where, grid_where, substrate_where, file_where;
+  std::string particles_where, count_where, patch_where, grid_where, substrate_where, file_where;
 };
 
 // Reads and checks the file; InputError (exit 2) naming the file, line and key.

@@ -4,9 +4,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/interrupt.hpp"
+
 namespace coldspray::geometry {
 
 namespace {
+
+// The seeding reads the stop flag once a row of lattice sites (of cubes, coarsened): a row is at
+// most the body's width in sites, and a body of 1e7 points has a few thousand rows.
+constexpr const char* kSeeding = "seeding the bodies";
 
 // Index range [lo, hi] of lattice sites origin + (i + 1/2) s within [min, max].
 std::array<long, 2> site_range(double min, double max, double origin, double s) {
@@ -70,11 +76,13 @@ SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice) {
   }
   SeededPoints out;
   for (long k = range[2][0]; k <= range[2][1]; ++k)
-    for (long j = range[1][0]; j <= range[1][1]; ++j)
+    for (long j = range[1][0]; j <= range[1][1]; ++j) {
+      stop_set_up_if_interrupted(kSeeding);
       for (long i = range[0][0]; i <= range[0][1]; ++i) {
         const Vec3 x = origin + s * Vec3(i + 0.5, j + 0.5, k + 0.5);
         if (contains(shape, x)) out.add_site(shape, x, s, lattice.axisymmetric);
       }
+    }
   return out;
 }
 
@@ -154,12 +162,14 @@ SeededPoints seed_coarsened(const case_file::Shape& shape, const Lattice& lattic
   const Coarsener coarsener(shape, lattice, fine);
   SeededPoints out;
   for (long k = range[2][0]; k <= range[2][1]; ++k)
-    for (long j = range[1][0]; j <= range[1][1]; ++j)
+    for (long j = range[1][0]; j <= range[1][1]; ++j) {
+      stop_set_up_if_interrupted(kSeeding);
       for (long i = range[0][0]; i <= range[0][1]; ++i) {
         Vec3 lo = origin + b * Vec3(i, j, k);
         if (lattice.axisymmetric) lo.y() = 0.0;  // the plane of the sites
         coarsener.add(lo, b, out);
       }
+    }
   return out;
 }
 

@@ -45,6 +45,7 @@ struct SeededPoints {
 // neighbours on the lattice (6 in 3D; 4 in r-z, the axis not counting as a boundary) is not
 // inside the shape: the points bonding acts on (thesis §4.1.1, the set S). Which neighbours are
 // outside tells the face (bottom: -z, top: +z, side: the others) for fixed and absorbing faces.
+// Interrupted at SIGINT or SIGTERM (core/interrupt.hpp), read once a row of sites.
 SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice);
 
 // Seeds the same lattice, but where a cube of 2^l x 2^l (x 2^l) sites, l <= levels, lies inside

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
+
 namespace coldspray::pd {
 
 namespace {
@@ -73,6 +75,9 @@ Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange
       if (N.body[p] == b) members.push_back(static_cast<std::uint32_t>(p));
     const CellList list = bin(X, members, reach);
     for (std::size_t p = body.begin; p < body.end; ++p) {
+      // Set-up only (the families are built once): the stop flag every 4096 points, a few
+      // milliseconds of this loop.
+      if (p % 4096 == 0) stop_set_up_if_interrupted("building the peridynamic families");
       found.clear();
       const long ci = list.coordinate(X[p][0], 0), cj = list.coordinate(X[p][1], 1),
                  ck = list.coordinate(X[p][2], 2);

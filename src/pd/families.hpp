@@ -53,7 +53,7 @@ struct BondWeights {
 // Families of the real points of `bodies`, among the points of N (real and ghost) of the same
 // body in their reference positions, with horizon delta[b] for body b, found with a cell list of
 // cells delta + h/2 wide; each point's neighbours in ascending index order. Throws
-// std::length_error past 2^32 points.
+// std::length_error past 2^32 points, Interrupted at SIGINT or SIGTERM (core/interrupt.hpp).
 Families build_families(const Neighbours& N, const std::vector<bodies::BodyRange>& bodies,
                         const std::vector<double>& delta);
 

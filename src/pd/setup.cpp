@@ -12,6 +12,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "case/key_locations.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "pd/bulk_fracture.hpp"
 #include "pd/control_length.hpp"
 #include "pd/deformation.hpp"
@@ -41,6 +42,7 @@ void invert_moments(const case_file::Case& c, State& s) {
     const bodies::BodyRange& body = s.bodies[b];
     const BondWeights weights = bond_weights(s, b);
     for (std::size_t i = body.begin; i < body.end; ++i) {
+      if (i % 4096 == 0) stop_set_up_if_interrupted("inverting the peridynamic shape tensors");
       const Eigen::Matrix3d K = shape_tensor(s.families, s.neighbours, weights, i);
       const MomentMatrix M = moment_matrix(s.families, s.neighbours, weights, i);
       if (singular(K) || singular(M))

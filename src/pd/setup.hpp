@@ -9,7 +9,8 @@ namespace coldspray::pd {
 
 // Throws InputError (naming the key) for what only the seeded points reveal: overlapping bodies,
 // a body with no points, or a point whose family cannot span three dimensions (a singular shape
-// tensor: the spacing leaves a body too thin for one full family).
+// tensor: the spacing leaves a body too thin for one full family); Interrupted at SIGINT or
+// SIGTERM, read while it seeds and builds the families and shape tensors (core/interrupt.hpp).
 State build_state(const case_file::Case& c);
 
 }  // namespace coldspray::pd

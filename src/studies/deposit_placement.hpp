@@ -38,6 +38,8 @@ struct DepositPlan {
   double arrival_window = 0.0;    // s: arrival times are uniform over [0, window]
   double clearance = 0.0;         // the least gap between two particles' surfaces at t = 0, m
   std::uint64_t seed = 1;
+
+  double speed_of(double diameter) const;  // the size law's speed, m/s
 };
 
 struct PlacedParticle {
@@ -55,11 +57,16 @@ struct Placement {
 };
 inline constexpr int kPlacementTries = 1000;
 
+// The diameters place_particles draws first, in the order drawn, m: what the deposit's size
+// depends on, known before its particles are placed.
+std::vector<double> draw_diameters(const DepositPlan& plan);
+
 // Draws the sizes, then for each particle in turn an arrival time (the first's is 0: it touches
 // the substrate at t = 0, as the thesis' first particle, §5.2.2; the others' uniform over the
 // window) and a centre over the patch, both drawn again while the particle comes closer than the
-// clearance to one placed before it. Its bottom starts speed * arrival above z = 0, so that
-// undisturbed it arrives at its time. The particles are then sorted by arrival.
+// clearance to one placed before it, at most kPlacementTries times. Its bottom starts
+// speed * arrival above z = 0, so that undisturbed it arrives at its time. The particles are then
+// sorted by arrival. Interrupted (core/interrupt.hpp) at SIGINT or SIGTERM.
 Placement place_particles(const DepositPlan& plan);
 
 }  // namespace coldspray::studies
