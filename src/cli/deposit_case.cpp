@@ -67,7 +67,7 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
             : file.description));
   line("bodies:");
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    stop_set_up_if_interrupted("writing the case");
+    stop_set_up_if_interrupted("generating the case");
     const studies::PlacedParticle& p = particles[i];
     line(fmt::format("  - name: {}   # arrives at {:.4g} ns", names[i], p.arrival * 1e9));
     line("    material: " + file.material);
