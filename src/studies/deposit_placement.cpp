@@ -164,7 +164,8 @@ Placement place_particles(const DepositPlan& plan) {
     placed[i].diameter = diameters[i];
     placed[i].speed = plan.speed_of(diameters[i]);
   }
-  const double largest = *std::max_element(diameters.begin(), diameters.end());
+  const double largest =
+      diameters.empty() ? 0.0 : *std::max_element(diameters.begin(), diameters.end());
   PlacedCells cells(placed, largest + plan.clearance, plan.clearance);
   for (std::size_t i = 0; i < placed.size(); ++i) {
     stop_set_up_if_interrupted("placing particles");

@@ -165,14 +165,19 @@ TEST(Deposit, TheSeedFixesTheCase) {
 
 struct BadFile {
   std::string from, to, message;
+  bool crowded = false;  // on a 2 um patch, all arriving at once
 };
 
 // Each refusal exits 2 naming the file's line and key, and writes nothing.
 TEST(Deposit, RefusesFilesItCannotPlaceOrDraw) {
   const BadFile bad[] = {
-      // Ten 4 um particles arriving at once on a 2 um patch cannot lie apart.
-      {"count: 3", "count: 10",
-       "small.yaml:10:8: key 'patch': particle 2 of 10 found no place 2.5 um clear"},
+      // Three 4 um particles arriving at once on a 2 um patch fit its room but cannot lie apart;
+      // ten do not fit at all (their spheres grown by half the clearance, 1.25 um, fill 1 393 um^3,
+      // the patch and their heights grown by their largest radius 578 um^3).
+      {"count: 3", "count: 3",
+       "small.yaml:10:8: key 'patch': particle 2 of 3 found no place 2.5 um clear", true},
+      {"count: 3", "count: 10", "small.yaml:4:10: key 'particles.count': 10 particles cannot fit",
+       true},
       {"deviation: 0.3 um", "deviation: 1.5 um",
        "key 'particles.diameter.deviation': reaches sizes <= 0 within 3 deviations"},
       {"{distribution: normal, mean: 4 um, deviation: 0.3 um}",
@@ -188,15 +193,67 @@ TEST(Deposit, RefusesFilesItCannotPlaceOrDraw) {
   for (const BadFile& b : bad) {
     const fs::path dir = make_temp_dir("deposit");
     std::string text = replaced(kSmall, b.from, b.to);
-    if (b.from == "count: 3")
+    if (b.crowded) {
       text = replaced(text, "patch: {x: 6 um, y: 6 um}", "patch: {x: 2 um, y: 2 um}");
-    if (b.to == "count: 10") text = replaced(text, "arrival_window: 10 ns", "arrival_window: 0 ns");
+      text = replaced(text, "arrival_window: 10 ns", "arrival_window: 0 ns");
+    }
     write(dir, "small.yaml", text);
     const auto r = run_coldspray("deposit small.yaml --out run --quiet", dir);
     EXPECT_EQ(r.status, 2) << b.to << "\n" << r.output;
     EXPECT_TRUE(has(r, b.message)) << b.to << "\n" << r.output;
     EXPECT_FALSE(fs::exists(dir / "run")) << b.to;
   }
+}
+
+// The thesis' ten-particle file (examples/deposit) with another count and patch.
+std::string ten_particles(const std::string& count, const std::string& patch) {
+  const std::string text =
+      read_text(fs::path(COLDSPRAY_SOURCE_DIR) / "examples" / "deposit" / "ten-particles.yaml");
+  return replaced(replaced(text, "count: 10\n", "count: " + count + "\n"),
+                  "patch: {x: 30 um, y: 30 um}", "patch: " + patch);
+}
+
+// Issue 53: 100 000 particles on a 100 mm patch were placed one by one and their generated case
+// read for 1 501 s before the point cap refused it, and 1 000 took 7.3 s. The deposit's points
+// are now counted before any particle is placed (the substrate alone: 2.3e12 at 0.35 um), at
+// the key that makes them: the patch here, the count when the particles have more.
+TEST(Deposit, ADepositOverThePointCapIsRefusedBeforeItsParticlesArePlaced) {
+  for (const std::string count : {"100000", "1000"}) {
+    const fs::path dir = make_temp_dir("deposit");
+    write(dir, "big.yaml", ten_particles(count, "{x: 100 mm, y: 100 mm}"));
+    const auto r = run_coldspray("deposit big.yaml --write-case case.yaml", dir);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_TRUE(has(r, "key 'patch': the deposit would have about 2.3")) << r.output;
+    EXPECT_TRUE(has(r, "(" + count + " particles about")) << r.output;
+    EXPECT_TRUE(has(r, "more than limits.max_points, by default")) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "case.yaml"));
+  }
+  // A thousand 14 um particles at 0.35 um have 3.4e7 points, the substrate under a 300 um patch
+  // 2.5e7; the cap is the --set one, as for the case.
+  const fs::path dir = make_temp_dir("deposit");
+  write(dir, "many.yaml", ten_particles("1000", "{x: 300 um, y: 300 um}"));
+  const auto r =
+      run_coldspray("deposit many.yaml --out run --quiet --set limits.max_points=1e6", dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(has(r,
+                  "key 'particles.count': the deposit would have about 5.86e+07 points (1000 "
+                  "particles about 3.35e+07"))
+      << r.output;
+  EXPECT_TRUE(has(r, "more than limits.max_points = 1e+06")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "run"));
+}
+
+// 100 000 particles cannot lie apart over a 30 um patch and 50 ns of arrivals whatever the draws:
+// refused at their count before placement, which used to search through every particle's 1 000
+// draws until one found no place.
+TEST(Deposit, ACountThatCannotFitThePatchIsRefusedBeforePlacement) {
+  const fs::path dir = make_temp_dir("deposit");
+  write(dir, "crowded.yaml", ten_particles("100000", "{x: 30 um, y: 30 um}"));
+  const auto r = run_coldspray("deposit crowded.yaml --write-case case.yaml", dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(has(r, "key 'particles.count': 100000 particles cannot fit")) << r.output;
+  EXPECT_TRUE(has(r, "which holds about 53 of them")) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "case.yaml"));
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
+
+#include "studies/deposit_room.hpp"
 
 namespace coldspray::studies {
 namespace {
@@ -129,6 +132,38 @@ TEST(DepositPlacement, ReportsTheFirstParticleWithoutAPlace) {
   ASSERT_GE(placed.unplaced, 1);
   EXPECT_LE(placed.unplaced, 4);
   EXPECT_EQ(placed.particles.size(), static_cast<std::size_t>(placed.unplaced));
+}
+
+// The sizes the deposit is sized by before placement are those placed (in another order: the
+// placement sorts them by arrival).
+TEST(DepositPlacement, DrawDiametersGivesThePlacedSizes) {
+  const DepositPlan plan = ten_particles(5);
+  std::vector<double> drawn = draw_diameters(plan), placed;
+  for (const PlacedParticle& p : place_particles(plan).particles) placed.push_back(p.diameter);
+  std::sort(drawn.begin(), drawn.end());
+  std::sort(placed.begin(), placed.end());
+  EXPECT_EQ(drawn, placed);
+}
+
+// The room is a bound no placement beats: every plan placed in full fits it (50 seeds), and the
+// ten 14 um particles that cannot all lie on a 20 um patch at once do not: their spheres grown by
+// half the clearance, 8.175 um, fill 22 884 um^3 against (20 + 16.35)^2 x 16.35 = 21 600 um^3.
+TEST(DepositPlacement, TheRoomHoldsEveryPlacementThatSucceeds) {
+  for (std::uint64_t seed = 0; seed < 50; ++seed) {
+    DepositPlan plan = ten_particles(seed);
+    plan.patch = {40e-6, 40e-6};
+    ASSERT_EQ(place_particles(plan).unplaced, -1);
+    EXPECT_TRUE(deposit_room(plan, draw_diameters(plan)).fits()) << seed;
+  }
+  DepositPlan flat = ten_particles(1);
+  flat.diameter = {SizeDistribution::Kind::Fixed, 14e-6, 0.0};
+  flat.patch = {20e-6, 20e-6};
+  flat.arrival_window = 0.0;
+  const DepositRoom room = deposit_room(flat, draw_diameters(flat));
+  EXPECT_NEAR(room.needed, 10 * 4.0 / 3.0 * std::numbers::pi * std::pow(8.175e-6, 3), 1e-21);
+  EXPECT_NEAR(room.room, std::pow(36.35e-6, 2) * 16.35e-6, 1e-21);
+  EXPECT_FALSE(room.fits());
+  EXPECT_EQ(room.most, 9);
 }
 
 }  // namespace
