@@ -9,6 +9,7 @@
 
 #include "bodies/grip.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "io/output_folder.hpp"
 #include "mpm/stepper.hpp"
 #include "pd/stepper.hpp"
@@ -114,6 +115,8 @@ std::shared_ptr<io::FolderLock> hold_folder(const RunOptions& options) {
 
 Summary run_case(const case_file::Case& c, const RunOptions& options) {
   SolverState state = build_solver_state(c);  // InputError before anything is written
+  // A signal after the set-up's last check stops here too, before the folder is touched.
+  stop_set_up_if_interrupted("the state was built");
   std::shared_ptr<io::FolderLock> lock;
   return std::visit(
       [&](auto& s) {
