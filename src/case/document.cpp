@@ -39,6 +39,10 @@ Document Document::from_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path, "", "no such file");
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory");
+  // A device or a fifo is not a file to read to its end: /dev/zero and /dev/full never end (the
+  // read below grew until std::bad_alloc, exit 1), and a fifo blocks until a writer comes.
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(path, "", "is not a regular file (a device, a fifo or a socket)");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open the file for reading");
   std::ostringstream text;

@@ -15,7 +15,8 @@ namespace coldspray::case_file {
 
 class Document {
  public:
-  // Reads a YAML file; InputError when it is missing, unreadable or not valid YAML.
+  // Reads a YAML file; InputError when it is missing, not a regular file, unreadable or not
+  // valid YAML.
   static Document from_file(const std::string& path);
   // Parses YAML text; `name` stands for the file in messages (e.g. "builtin:al-ptw").
   static Document from_text(std::string name, std::string_view text);
