@@ -64,6 +64,15 @@ std::optional<std::string> Document::origin(const YAML::Node& node) const {
   for (auto it = origins_.rbegin(); it != origins_.rend(); ++it) {
     if (contains(it->first, node)) return it->second;
   }
+  // A vector of the file with a component set on the command line (--set
+  // bodies.particle.velocity.0=...): a problem with the vector is the --set's. The file's line
+  // does not hold the value at fault; the fuzzer found velocity, center and max reported there.
+  if (node.IsSequence()) {
+    for (auto it = origins_.rbegin(); it != origins_.rend(); ++it) {
+      for (const auto& item : node)
+        if (item.IsScalar() && item.is(it->first)) return it->second;
+    }
+  }
   return std::nullopt;
 }
 
