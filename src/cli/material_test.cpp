@@ -2,6 +2,7 @@
 // the solvers' stress update and write the response as CSV (material_test/loading.hpp).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -52,7 +53,9 @@ void add_material_test(CLI::App& app) {
     io::require_writable(opt->out, "--out");  // before the work, not after it
 
     std::vector<material_test::Sample> samples;
-    samples.reserve(static_cast<std::size_t>(std::max(opt->steps, 0)) + 1);
+    // Clamped: drive() refuses a count beyond kMaxSteps, after this reserve.
+    samples.reserve(static_cast<std::size_t>(std::clamp(opt->steps, 0, material_test::kMaxSteps)) +
+                    1);
     auto write_samples = [&] {
       io::write_atomically(opt->out, [&](std::ostream& out) {
         material_test::write_csv_header(out);
