@@ -37,7 +37,7 @@ void add_bulk_fracture(CLI::App& app) {
                   "G_c, e.g. 3.65J/m^2 (default: twice the material's surface energy)");
   sub->add_option("--out", opt->out, "Output folder (bulk_fracture.csv, fit.json)")->required();
   sub->callback([opt] {
-    const materials::Material material = case_file::resolve_material(opt->material);
+    const materials::Material material = case_file::resolve_material(opt->material, "--material");
     const double h = parse_option_quantity("--spacing", opt->spacing, units::kLength);
     if (!(h > 0.0)) throw InputError("--spacing", "", "must be positive");
     if (!(opt->horizon_factor > 2.0 && opt->horizon_factor < 6.0))

@@ -49,7 +49,7 @@ void add_material_test(CLI::App& app) {
         parse_option_quantity("--temperature", opt->temperature, units::kTemperature);
     loading.isothermal = opt->isothermal;
     loading.steps = opt->steps;
-    const materials::Material material = case_file::resolve_material(opt->material);
+    const materials::Material material = case_file::resolve_material(opt->material, "--material");
     io::require_writable(opt->out, "--out");  // before the work, not after it
 
     std::vector<material_test::Sample> samples;
