@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/impact_case.hpp"
 #include "cli/impact_options.hpp"
+#include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -118,7 +119,8 @@ void add_impact(CLI::App& app) {
     sub->add_option("--velocity", opt->velocity, "Impact speed, e.g. 790m/s")->required();
   });
   sub->add_option("--write-case", opt->write_case,
-                  "Write the case file and stop (edit it, then `coldspray run` it)");
+                  "Write the case file and stop (edit it, then `coldspray run` it)")
+      ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt, sub] {
     const ImpactSpec spec = make_spec(*opt, *sub);

@@ -9,6 +9,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -38,7 +39,7 @@ void add_material_test(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--isothermal", opt->isothermal, "No adiabatic heating");
   sub->add_option("--steps", opt->steps, "Number of steps")->capture_default_str();
-  sub->add_option("--out", opt->out, "Output CSV file")->required();
+  sub->add_option("--out", opt->out, "Output CSV file")->required()->check(given_path());
   sub->callback([opt] {
     material_test::Loading loading;
     loading.mode = material_test::parse_mode(opt->mode);
