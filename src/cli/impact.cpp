@@ -124,10 +124,12 @@ void add_impact(CLI::App& app) {
   add_run_flags(*sub, opt->run);
   sub->callback([opt, sub] {
     const ImpactSpec spec = make_spec(*opt, *sub);
-    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     const GeneratedCase g = impact_case(spec);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->run.sets);
     const case_file::Case c = case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
+    // After the case is read: a refused command's output is its error, not a warning about the
+    // calibration of a pair that is not simulated (an unknown --material).
+    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     if (!opt->write_case.empty()) {
       write_case(opt->write_case, case_file_text(g, overrides));
       std::cout << fmt::format("wrote {} (run it with: coldspray run {})\n", opt->write_case,
