@@ -68,8 +68,10 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
     line("    spacing: " + um(file.spacing));
     line(fmt::format("    velocity: [0, 0, -{} m/s]", number(p.speed)));
     line(fmt::format("    temperature: {} K", number(file.temperature)));
-    for (const char* key : {"material", "shape", "spacing", "velocity", "temperature"})
+    for (const char* key : {"material", "shape", "velocity", "temperature"})
       g.origins.push_back({fmt::format("bodies.{}.{}", names[i], key), file.particles_where});
+    // The spacing is the grid's, as the substrate's is.
+    g.origins.push_back({fmt::format("bodies.{}.spacing", names[i]), file.grid_where});
   }
   line("  - name: substrate");
   line("    material: " + yaml_scalar(file.substrate_material));
