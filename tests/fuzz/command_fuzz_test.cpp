@@ -3,7 +3,7 @@
 // missing values, thread counts out of range and paths that are folders, missing, or devices,
 // each run through the built binary under `timeout`. Every command is one that ends at once: a
 // guard that no mutation touches stops it before it simulates (--write-case, --help, --steps 10,
-// solver.end_time=1ps), appended last so that it wins over whatever the mutations put before it.
+// solver.end_time=1e-12 s), appended last, so that it wins over what the mutations put before it.
 // It asserts what docs/reliability.md promises: the exit status is 0, 2 (bad input) or 3 (run
 // fault), never 1 (internal error), a signal or the timeout, and a status-2 output starts with
 // `error:` and names an option, a file or a key. The command lines in

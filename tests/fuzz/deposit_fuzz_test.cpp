@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const int kInputs = fuzz::budget(3000, 300);
+const int kInputs = fuzz::budget(3000, 1000);
 
 // Valid deposit files; tests/data/fuzz/deposit/refused holds the reproducers, each refused.
 std::vector<std::string> seeds() {

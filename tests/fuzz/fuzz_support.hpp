@@ -14,9 +14,10 @@
 
 namespace coldspray::fuzz {
 
-// ASan and UBSan (the sanitize preset) make the reader about ten times slower: the fuzzers run
-// a tenth of their release budget there, so the preset's test run stays short. GCC defines
-// __SANITIZE_ADDRESS__ under -fsanitize=address; Clang answers __has_feature.
+// ASan and UBSan (the sanitize preset) make the readers 2 to 4 times slower and a run of the
+// binary about 9 times (measured, docs/reliability.md): the fuzzers run a smaller budget there,
+// so the preset's test run stays short. GCC defines __SANITIZE_ADDRESS__ under
+// -fsanitize=address; Clang answers __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr bool kSanitized = true;
 #elif defined(__has_feature)
@@ -32,7 +33,7 @@ inline constexpr bool kSanitized = false;
 // `release` inputs in the release build, `sanitized` under the sanitizers.
 constexpr int budget(int release, int sanitized) { return kSanitized ? sanitized : release; }
 
-// The most an input may take to be read: release runs take milliseconds, ASan ten times more;
+// The most an input may take to be read: release runs take milliseconds, ASan a few times more;
 // an input near this bound is a stall in the making (the 100 000 keys once took 48 s).
 inline constexpr double kPerInputSeconds = 2.0;
 

@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const int kInputs = fuzz::budget(3000, 300);
+const int kInputs = fuzz::budget(3000, 1000);
 constexpr const char* kName = "fuzzed.yaml";
 
 // Valid cases, each a different part of the schema: MPM 3D and r-z, peridynamics, several
@@ -253,7 +253,8 @@ TEST(SetFuzz, NoCrashNoStallEveryErrorAtItsSet) {
     for (std::size_t n = m.below(3) + 1; n > 0; --n) sets.push_back(texts.next(seed.paths));
     accepted += !check_sets(seed, sets, "input " + std::to_string(i));
   }
-  // Not all refused: the harness itself does not break every case (25 of the 3000 load).
+  // Not all refused: the harness itself does not break every case (of the 3000, 18 load; of the
+  // first 300, none, hence the sanitizers' 1000).
   EXPECT_GT(accepted, 0);
 }
 
