@@ -14,11 +14,11 @@ std::vector<std::string> builtin_material_names() {
   return names;
 }
 
-materials::Material builtin_material(const std::string& name) {
+materials::Material builtin_material(const std::string& name, const std::string& where) {
   const auto& sources = materials::builtin_sources();
   const auto it = sources.find(name);
   if (it == sources.end()) {
-    throw InputError("", "", unknown_word("built-in material", name, builtin_material_names()));
+    throw InputError(where, "", unknown_word("built-in material", name, builtin_material_names()));
   }
   const Document doc = Document::from_text("builtin:" + name, it->second);
   return read_material(doc, doc.root(), "", name);

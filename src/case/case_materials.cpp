@@ -103,9 +103,9 @@ void resolve_body_materials(const Document& doc, Case& c) {
   c.materials = std::move(used);
 }
 
-materials::Material resolve_material(const std::string& reference) {
+materials::Material resolve_material(const std::string& reference, const std::string& where) {
   const std::size_t colon = reference.rfind(':');
-  if (colon == std::string::npos) return builtin_material(reference);
+  if (colon == std::string::npos) return builtin_material(reference, where);
   const std::string name = reference.substr(colon + 1);
   const Document doc = Document::from_file(reference.substr(0, colon));
   const YAML::Node& root = doc.root();

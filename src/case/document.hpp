@@ -18,7 +18,8 @@ namespace coldspray::case_file {
 
 class Document {
  public:
-  // Reads a YAML file; InputError when it is missing, unreadable or not valid YAML.
+  // Reads a YAML file; InputError when it is missing, not a regular file, unreadable or not
+  // valid YAML.
   static Document from_file(const std::string& path);
   // Parses YAML text; `name` stands for the file in messages (e.g. "builtin:al-ptw").
   static Document from_text(std::string name, std::string_view text);
@@ -48,7 +49,10 @@ class Document {
 
  private:
   Document(std::string name, YAML::Node root) : name_(std::move(name)), root_(std::move(root)) {}
+  // Where a node came from: the latest origin whose tree holds it, or for a vector of the file,
+  // the origin of a component set into it.
   std::optional<std::string> origin(const YAML::Node& node) const;
+  std::optional<std::string> origin_holding(const YAML::Node& node) const;
 
   // The node at a key path, or its deepest existing ancestor (found = false), with the map key
   // that names it (none for the root and for list items).

@@ -53,10 +53,12 @@ void write_resolved(const Case& c, std::ostream& out);
 
 // Built-in materials (data/materials/*.yaml).
 std::vector<std::string> builtin_material_names();
-materials::Material builtin_material(const std::string& name);  // InputError if unknown
+// InputError if unknown, located at `where` (the option that named it, or nothing).
+materials::Material builtin_material(const std::string& name, const std::string& where = "");
 
-// "NAME" for a built-in, or "CASE.yaml:NAME" for a material of a case file's `materials:`.
-materials::Material resolve_material(const std::string& reference);
+// "NAME" for a built-in, or "CASE.yaml:NAME" for a material of a case file's `materials:`; an
+// unknown built-in is reported at `where` (`material-test --material`), one of the file in it.
+materials::Material resolve_material(const std::string& reference, const std::string& where = "");
 
 // Every parameter of a material with its SI unit, grouped by sub-model, with each group's source.
 void print_material(const materials::Material& m, std::ostream& out);

@@ -13,6 +13,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -35,9 +36,11 @@ void add_bulk_fracture(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--fracture-energy", opt->fracture_energy,
                   "G_c, e.g. 3.65J/m^2 (default: twice the material's surface energy)");
-  sub->add_option("--out", opt->out, "Output folder (bulk_fracture.csv, fit.json)")->required();
+  sub->add_option("--out", opt->out, "Output folder (bulk_fracture.csv, fit.json)")
+      ->required()
+      ->check(given_path());
   sub->callback([opt] {
-    const materials::Material material = case_file::resolve_material(opt->material);
+    const materials::Material material = case_file::resolve_material(opt->material, "--material");
     const double h = parse_option_quantity("--spacing", opt->spacing, units::kLength);
     if (!(h > 0.0)) throw InputError("--spacing", "", "must be positive");
     if (!(opt->horizon_factor > 2.0 && opt->horizon_factor < 6.0))

@@ -7,6 +7,7 @@
 
 #include "cli/calibration_file.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/thread_count.hpp"
 #include "studies/calibration.hpp"
 #include "studies/mpi_session.hpp"
@@ -125,8 +126,8 @@ void add_calibrate(CLI::App& app) {
       "calibrate",
       "Calibrate the bonding model's parameters, or its activation, on particle sizes at their "
       "critical velocities (thesis §4.1.2, §5.1; docs/studies.md)");
-  sub->add_option("file", opt->file, "Calibration file (YAML)")->required();
-  sub->add_option("--out", opt->out_dir, "Output folder (default out/NAME)");
+  sub->add_option("file", opt->file, "Calibration file (YAML)")->required()->check(given_path());
+  sub->add_option("--out", opt->out_dir, "Output folder (default out/NAME)")->check(given_path());
   sub->add_option("--jobs", opt->jobs, "Impacts run at once in this process (default 1)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,

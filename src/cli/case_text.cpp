@@ -24,7 +24,48 @@ std::string folder_safe(std::string text) {
   return text;
 }
 
-void append_comment(std::string& y, std::string_view text) {
+std::string one_line(std::string text) {
+  for (char& ch : text)
+    if (std::iscntrl(static_cast<unsigned char>(ch))) ch = ' ';
+  return text;
+}
+
+namespace {
+
+// Whether `text` reads back as itself as a plain scalar in block context: it starts with a
+// letter or digit, holds no ": " (a key), no '#', quote, bracket or control character, does not
+// end in ':' or a space (trimmed) and is not YAML's null.
+bool plain_safe(std::string_view text) {
+  if (text.empty() || !std::isalnum(static_cast<unsigned char>(text.front())) ||
+      text.back() == ':' || text.back() == ' ' || text.find(": ") != std::string_view::npos ||
+      text == "null" || text == "Null" || text == "NULL")
+    return false;
+  return std::all_of(text.begin(), text.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return std::isalnum(c) || c >= 0x80 ||
+           std::string_view("-_./:, ()+").find(ch) != std::string_view::npos;
+  });
+}
+
+}  // namespace
+
+std::string yaml_scalar(std::string_view text) {
+  if (plain_safe(text)) return std::string(text);
+  std::string out = "\"";
+  for (const char ch : text) {
+    if (ch == '"' || ch == '\\')
+      out += {'\\', ch};
+    else if (std::iscntrl(static_cast<unsigned char>(ch)))
+      out += fmt::format("\\x{:02x}", static_cast<unsigned char>(ch));
+    else
+      out += ch;
+  }
+  return out + '"';
+}
+
+void append_comment(std::string& y, std::string_view paragraph) {
+  const std::string flat = one_line(std::string(paragraph));
+  std::string_view text = flat;
   std::size_t row = 1;  // the width of the row being written, "#" included
   y += '#';
   while (!text.empty()) {

@@ -20,7 +20,18 @@ std::string short_number(double x);
 // Keeps letters, digits, '.', '-' and '_' so the name is a folder name (case_schema.hpp).
 std::string folder_safe(std::string text);
 
-// A comment paragraph, wrapped at word boundaries to the repository's 100 columns.
+// A comment paragraph, wrapped at word boundaries to the repository's 100 columns; control
+// characters (a newline in an option's value) as spaces, so that the comment stays one.
 void append_comment(std::string& y, std::string_view text);
+
+// `text` with its control characters as spaces: a "# ..." line that stays a comment.
+std::string one_line(std::string text);
+
+// `text` as a YAML scalar that reads back as written whatever it holds: plain when that is safe
+// (al-ptw, "22 um sphere at 790 m/s, 3d"), else double-quoted. A name the user gave (a
+// material, a description) pasted bare was YAML: `--material 'al-ptw # x'` wrote a case of
+// al-ptw, and `--material '[x'` broke the generated case's syntax, reported at a line of it the
+// user never saw.
+std::string yaml_scalar(std::string_view text);
 
 }  // namespace coldspray::cli

@@ -7,6 +7,7 @@
 #include "case/load.hpp"
 #include "cli/case_summary.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 
 namespace coldspray::cli {
@@ -18,7 +19,7 @@ void add_check(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   auto* sub = app.add_subcommand("check", "Validate a case file without running it");
-  sub->add_option("case", opt->case_path, "Case file (YAML)")->required();
+  sub->add_option("case", opt->case_path, "Case file (YAML)")->required()->check(given_path());
   sub->add_option("--set", opt->sets, "Override a key: KEY=VALUE (repeatable)");
   sub->callback([opt] {
     const case_file::Case c = case_file::load_case(opt->case_path, parse_overrides(opt->sets));

@@ -18,6 +18,7 @@
 #include "cli/deposit_file.hpp"
 #include "cli/deposit_limits.hpp"
 #include "cli/impact_options.hpp"
+#include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -225,14 +226,16 @@ void add_deposit(CLI::App& app) {
       "deposit",
       "Spray many particles onto a substrate in one 3D run and measure the deposit "
       "(docs/deposit.md)");
-  sub->add_option("deposit", opt->path, "Deposit file (YAML)")->required();
+  sub->add_option("deposit", opt->path, "Deposit file (YAML)")->required()->check(given_path());
   auto* write =
       sub->add_option("--write-case", opt->write_case,
-                      "Write the generated case file and stop (edit it, then `coldspray run` it)");
+                      "Write the generated case file and stop (edit it, then `coldspray run` it)")
+          ->check(given_path());
   sub->add_option("--restart", opt->restart,
                   "Continue the deposit's run from its latest checkpoint (its run folder), then "
                   "report it")
-      ->excludes(write);
+      ->excludes(write)
+      ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt] {
     const DepositFile file = read_deposit_file(opt->path);

@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/impact_case.hpp"
 #include "cli/impact_options.hpp"
+#include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -118,14 +119,17 @@ void add_impact(CLI::App& app) {
     sub->add_option("--velocity", opt->velocity, "Impact speed, e.g. 790m/s")->required();
   });
   sub->add_option("--write-case", opt->write_case,
-                  "Write the case file and stop (edit it, then `coldspray run` it)");
+                  "Write the case file and stop (edit it, then `coldspray run` it)")
+      ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt, sub] {
     const ImpactSpec spec = make_spec(*opt, *sub);
-    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     const GeneratedCase g = impact_case(spec);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->run.sets);
     const case_file::Case c = case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
+    // After the case is read: a refused command's output is its error, not a warning about the
+    // calibration of a pair that is not simulated (an unknown --material).
+    if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
     if (!opt->write_case.empty()) {
       write_case(opt->write_case, case_file_text(g, overrides));
       std::cout << fmt::format("wrote {} (run it with: coldspray run {})\n", opt->write_case,

@@ -110,8 +110,13 @@ std::pair<double, double> parse_grid(const std::string& text) {
     if (next == std::string::npos ||
         !(std::isdigit(static_cast<unsigned char>(text[next])) || text[next] == '.'))
       continue;
-    return {parse_with_unit(text.substr(0, i), units::kLength),
-            parse_with_unit(text.substr(i + 1), units::kLength)};
+    const double cell = parse_with_unit(text.substr(0, i), units::kLength);
+    const double spacing = parse_with_unit(text.substr(i + 1), units::kLength);
+    // A deposit file's grid: 0um/0um passed its reader and was refused only in the generated
+    // case, at a key of it ('bodies.p1.spacing') and at the file's particles, not its grid.
+    if (!(cell > 0.0) || !(spacing > 0.0))
+      throw UnitError("the cell and the spacing must be > 0, got '" + text + "'");
+    return {cell, spacing};
   }
   throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
 }

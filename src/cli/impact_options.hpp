@@ -39,7 +39,7 @@ void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
                              const std::function<void()>& particle_options);
 
 // "CELL/SPACING" (e.g. 0.7um/0.175um) in metres: split at the '/' that a number follows, since
-// units hold '/' too (m/s). Throws UnitError.
+// units hold '/' too (m/s). Throws UnitError, also for a cell or spacing <= 0.
 std::pair<double, double> parse_grid(const std::string& text);
 
 // "D/N", N > 0 cells across the particle's diameter (the size-similar set-up's resolution), or

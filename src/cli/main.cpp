@@ -17,6 +17,11 @@ int main(int argc, char** argv) {
                "coldspray"};
   app.set_version_flag("--version", std::string("coldspray ") + COLDSPRAY_VERSION);
   app.require_subcommand(1);
+  // CLI11's own refusals (a missing value, a required option, a validator's) start "error: " as
+  // every other refusal does (exit status 2), so a script or a user can tell them from output.
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    return "error: " + CLI::FailureMessage::simple(a, e);
+  });
   cli::add_run(app);
   cli::add_impact(app);
   cli::add_check(app);

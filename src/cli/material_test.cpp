@@ -2,12 +2,14 @@
 // the solvers' stress update and write the response as CSV (material_test/loading.hpp).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <vector>
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -37,7 +39,7 @@ void add_material_test(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--isothermal", opt->isothermal, "No adiabatic heating");
   sub->add_option("--steps", opt->steps, "Number of steps")->capture_default_str();
-  sub->add_option("--out", opt->out, "Output CSV file")->required();
+  sub->add_option("--out", opt->out, "Output CSV file")->required()->check(given_path());
   sub->callback([opt] {
     material_test::Loading loading;
     loading.mode = material_test::parse_mode(opt->mode);
@@ -48,11 +50,13 @@ void add_material_test(CLI::App& app) {
         parse_option_quantity("--temperature", opt->temperature, units::kTemperature);
     loading.isothermal = opt->isothermal;
     loading.steps = opt->steps;
-    const materials::Material material = case_file::resolve_material(opt->material);
+    const materials::Material material = case_file::resolve_material(opt->material, "--material");
     io::require_writable(opt->out, "--out");  // before the work, not after it
 
     std::vector<material_test::Sample> samples;
-    samples.reserve(static_cast<std::size_t>(std::max(opt->steps, 0)) + 1);
+    // Clamped: drive() refuses a count beyond kMaxSteps, after this reserve.
+    samples.reserve(static_cast<std::size_t>(std::clamp(opt->steps, 0, material_test::kMaxSteps)) +
+                    1);
     auto write_samples = [&] {
       io::write_atomically(opt->out, [&](std::ostream& out) {
         material_test::write_csv_header(out);

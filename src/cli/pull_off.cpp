@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "cli/thread_count.hpp"
 #include "core/error.hpp"
@@ -26,8 +27,10 @@ void add_pull_off(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "pull-off", "Pull an impacted splat off its substrate and measure its adhesion strength");
   sub->add_option("IMPACT_DIR", opt->impact, "The impact's run folder (its last checkpoint)")
-      ->required();
-  sub->add_option("--out", opt->out, "Output folder (default: IMPACT_DIR-pull-off)");
+      ->required()
+      ->check(given_path());
+  sub->add_option("--out", opt->out, "Output folder (default: IMPACT_DIR-pull-off)")
+      ->check(given_path());
   sub->add_option("--speed", opt->speed, "The grip's speed after its ramp")->capture_default_str();
   sub->add_option("--direction", opt->direction, "normal (pull-off) or shear (push along x)")
       ->check(CLI::IsMember({"normal", "shear"}))

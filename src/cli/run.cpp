@@ -5,6 +5,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 
@@ -18,14 +19,17 @@ void add_run(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   auto* sub = app.add_subcommand("run", "Run a case file");
-  auto* case_option = sub->add_option("case", opt->case_path, "Case file (YAML)");
+  auto* case_option =
+      sub->add_option("case", opt->case_path, "Case file (YAML)")->check(given_path());
   sub->add_option("--restart", opt->restart,
                   "Continue a run from its latest checkpoint (a run folder) or from a "
                   "checkpoint file, in the run's folder")
-      ->excludes(case_option);
+      ->excludes(case_option)
+      ->check(given_path());
   sub->add_option("--initial-state", opt->run.initial_state,
                   "Start the case from a checkpoint's state (same bodies), at t = 0")
-      ->excludes("--restart");
+      ->excludes("--restart")
+      ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt] {
     if (opt->restart.empty() && opt->case_path.empty())

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "cli/case_summary.hpp"
+#include "cli/path_option.hpp"
 #include "cli/thread_count.hpp"
 #include "core/error.hpp"
 #include "run/checkpoints.hpp"
@@ -16,7 +17,7 @@ namespace coldspray::cli {
 namespace fs = std::filesystem;
 
 void add_run_flags(CLI::App& sub, RunFlags& flags) {
-  sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)");
+  sub.add_option("--out", flags.out_dir, "Output folder (default out/NAME)")->check(given_path());
   sub.add_flag("--overwrite", flags.overwrite,
                "Replace the results of a previous run in the output folder");
   sub.add_option("--set", flags.sets, "Override a key: KEY=VALUE (repeatable)");

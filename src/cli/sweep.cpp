@@ -9,6 +9,7 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
+#include "cli/path_option.hpp"
 #include "cli/thread_count.hpp"
 #include "studies/mpi_session.hpp"
 #include "studies/study_lock.hpp"
@@ -28,11 +29,12 @@ void add_sweep(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   auto* sub = app.add_subcommand("sweep", "Run a case over combinations of varied keys");
-  sub->add_option("case", opt->case_path, "Case file (YAML)")->required();
+  sub->add_option("case", opt->case_path, "Case file (YAML)")->required()->check(given_path());
   sub->add_option("--vary", opt->vary, "KEY=V1,V2,... or KEY=START:STOP:STEP (repeatable)")
       ->required();
   sub->add_option("--set", opt->sets, "Override a key in every case: KEY=VALUE (repeatable)");
-  sub->add_option("--out", opt->out_dir, "Output folder (default out/NAME-sweep)");
+  sub->add_option("--out", opt->out_dir, "Output folder (default out/NAME-sweep)")
+      ->check(given_path());
   sub->add_option("--jobs", opt->jobs, "Cases run at once in this process (default 1)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,

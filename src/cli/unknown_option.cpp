@@ -25,6 +25,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kSynonyms
 
 std::optional<std::string> message_for(const CLI::App& sub) {
   for (const std::string& arg : sub.remaining()) {
+    // CLI11 lists an empty leftover as nothing: "The following argument was not expected: ".
+    if (arg.empty()) return "an empty argument ('') was not expected";
     if (arg.size() < 2 || arg[0] != '-') continue;
     const std::string name = arg.substr(0, arg.find('='));
     std::vector<std::string> names;

@@ -12,6 +12,7 @@
 #include "case/load.hpp"
 #include "cli/commands.hpp"
 #include "cli/impact_options.hpp"
+#include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "cli/run_report.hpp"
 #include "cli/thread_count.hpp"
@@ -80,7 +81,8 @@ void add_vcrit(CLI::App& app) {
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
   sub->add_option("--set", opt->sets, "Override a key in every case: KEY=VALUE (repeatable)");
-  sub->add_option("--out", opt->out_dir, "Output folder (default out/vcrit-MATERIAL)");
+  sub->add_option("--out", opt->out_dir, "Output folder (default out/vcrit-MATERIAL)")
+      ->check(given_path());
   sub->add_option("--jobs", opt->jobs, "Diameters searched at once (default 1)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--threads-per-job", opt->threads_per_job,

@@ -69,6 +69,8 @@ void sync(const fs::path& path, const fs::path& target) {
 }  // namespace
 
 void require_replaceable(const fs::path& path, const std::string& where) {
+  // fs::absolute("") throws: `material-test --out ''` was an internal error (exit 1).
+  if (path.empty()) throw InputError(where, "", "an empty path: give the name of a file");
   std::error_code ec;
   const fs::path folder = fs::absolute(path).parent_path();
   if (!fs::is_directory(folder, ec))

@@ -34,7 +34,8 @@ void check(const Loading& l) {
   if (l.final_strain == 0.0 || !std::isfinite(l.final_strain))
     throw InputError("--final-strain", "", "must be non-zero (negative is compression)");
   if (!(l.temperature > 0.0)) throw InputError("--temperature", "", "must be above 0 K");
-  if (l.steps < 1) throw InputError("--steps", "", "must be at least 1");
+  if (l.steps < 1 || l.steps > kMaxSteps)
+    throw InputError("--steps", "", fmt::format("must be from 1 to {}", kMaxSteps));
 }
 
 // One step with velocity gradient L held constant over dt: strain increment sym(L) dt, spin

@@ -20,13 +20,18 @@ enum class Mode {
 // Throws InputError (where = "--mode") for an unknown name.
 Mode parse_mode(std::string_view name);
 
+// The most steps a loading takes. Every sample is kept (88 bytes) and written as a CSV row (about
+// 200 bytes); without a bound `--steps 2147483647` reserved 190 GB up front (std::bad_alloc,
+// exit 1), and 10^8 steps ran for minutes. A curve needs thousands (the default is 2000).
+inline constexpr int kMaxSteps = 1'000'000;
+
 struct Loading {
   Mode mode = Mode::UniaxialStrain;
   double strain_rate = 1.0;    // magnitude r of the driving rate, 1/s, > 0
   double final_strain = -0.1;  // signed: negative is compression (log strain, or gamma in shear)
   double temperature = 298.0;  // initial, K
   bool isothermal = false;
-  int steps = 2000;
+  int steps = 2000;  // 1 to kMaxSteps
 };
 
 // One row of the output; SI.

@@ -142,6 +142,13 @@ TEST(InputErrors, AxisymmetricBodiesMustBeSymmetricAboutZ) {
   EXPECT_EQ(e.where(), "--set bodies.particle.velocity");
   EXPECT_EQ(e.key(), "bodies.particle.velocity");
   EXPECT_TRUE(contains(e.message(), "must be along z"));
+  // One component set: the vector's problem is that --set's, not the file line's.
+  const InputError component = input_error([] {
+    load_case(case_path("axisymmetric.yaml"),
+              {parse_override("bodies.particle.velocity.0=10 m/s")});
+  });
+  EXPECT_EQ(component.where(), "--set bodies.particle.velocity.0");
+  EXPECT_EQ(component.key(), "bodies.particle.velocity");
   const InputError cylinder = input_error([] {
     load_case(case_path("axisymmetric.yaml"),
               {parse_override("bodies.substrate.shape.base_center=[0, 1 um, 0]")});

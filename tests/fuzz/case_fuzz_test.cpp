@@ -6,34 +6,22 @@
 // InputError (exit status 2) carries a location and says what is wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "case/load.hpp"
 #include "core/error.hpp"
+#include "fuzz_support.hpp"
 
 namespace coldspray::case_file {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr int kInputs = 5000;
-constexpr double kPerInputSeconds = 2.0;  // release runs take milliseconds; ASan, ten times more
 constexpr const char* kName = "fuzzed.yaml";
-
-// Tokens that make YAML and quantities interesting: structure, anchors, extreme numbers, units.
-constexpr std::array<std::string_view, 36> kTokens{
-    "&a ", "*a",     "<<: *a", "[",    "]",       "{",     "}",     ": ",     "- ",
-    "\n",  "\n  ",   "#",      "'",    "\"",      ",",     "1e308", "-1e308", "1e-308",
-    "0",   "-0",     "nan",    ".inf", "1e-20 s", "7 mm",  "20",    "um^12",  "m^13",
-    "1/s", "kg/m^3", "~",      "null", "true",    "! tag", "? key", "|\n  x", "%YAML 1.2\n"};
 
 // Keys a --set mutation targets, and values it gives them.
 constexpr std::array<std::string_view, 14> kKeys{"solver.cfl",
@@ -65,62 +53,23 @@ constexpr std::array<std::string_view, 14> kValues{"0.5",
                                                    "20",
                                                    "[[[[[[[[[[1]]]]]]]]]]"};
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
+// Every example, and the case reproducers at the top of tests/data/fuzz (its folders hold the
+// other fuzzers' seeds).
 std::vector<std::string> seeds() {
-  std::vector<std::string> out;
-  for (const char* folder : {COLDSPRAY_SOURCE_DIR "/examples", COLDSPRAY_TEST_DATA "/fuzz"})
-    for (const auto& entry : fs::recursive_directory_iterator(folder))
-      if (entry.path().extension() == ".yaml") out.push_back(read_text(entry.path()));
-  std::sort(out.begin(), out.end());  // the directory order is not fixed; the budget's is
+  std::vector<std::string> out = fuzz::yaml_texts({COLDSPRAY_SOURCE_DIR "/examples"});
+  for (std::string& text : fuzz::yaml_texts({COLDSPRAY_TEST_DATA "/fuzz"}, false))
+    out.push_back(std::move(text));
+  std::sort(out.begin(), out.end());  // as the budget's draws were before the folders
   return out;
 }
 
-class Mutator {
- public:
-  explicit Mutator(std::uint64_t seed) : random_(seed) {}
-
-  std::size_t below(std::size_t n) { return n == 0 ? 0 : random_() % n; }
-
-  void mutate(std::string& text) {
-    const std::size_t at = below(text.size() + 1);
-    switch (below(5)) {
-      case 0:  // insert a token
-        text.insert(at, kTokens[below(kTokens.size())]);
-        break;
-      case 1:  // delete a span
-        text.erase(at, below(16) + 1);
-        break;
-      case 2: {  // duplicate a span
-        const std::string span = text.substr(at, below(64) + 1);
-        text.insert(below(text.size() + 1), span);
-        break;
-      }
-      case 3:  // flip a byte
-        if (at < text.size()) text[at] = static_cast<char>(random_() & 0xff);
-        break;
-      default:  // replace a number's digits by an extreme
-        if (const std::size_t digit = text.find_first_of("0123456789", at);
-            digit != std::string::npos)
-          text.replace(digit, text.find_first_not_of("0123456789.e-", digit) - digit,
-                       kTokens[15 + below(5)]);
-    }
-  }
-
-  std::vector<Override> overrides() {
-    std::vector<Override> out;
-    for (std::size_t n = below(3); n > 0; --n)
-      out.push_back(
-          {std::string(kKeys[below(kKeys.size())]), std::string(kValues[below(kValues.size())])});
-    return out;
-  }
-
- private:
-  std::mt19937_64 random_;
-};
+// Up to two --set overrides drawn from kKeys and kValues.
+std::vector<Override> overrides(fuzz::Mutator& m) {
+  std::vector<Override> out;
+  for (std::size_t n = m.below(3); n > 0; --n)
+    out.push_back({std::string(m.pick(kKeys)), std::string(m.pick(kValues))});
+  return out;
+}
 
 // "FILE:LINE:COLUMN", "FILE" for a value with no position, "--set KEY" or "builtin:NAME...".
 bool located(const InputError& e) {
@@ -131,15 +80,15 @@ bool located(const InputError& e) {
 TEST(CaseFuzz, NoCrashNoStallEveryErrorLocated) {
   const std::vector<std::string> corpus = seeds();
   ASSERT_GE(corpus.size(), 20u);
-  Mutator m(20261203);
+  fuzz::Mutator m(20261203);
   int accepted = 0, refused = 0;
   for (int i = 0; i < kInputs; ++i) {
     std::string text = corpus[m.below(corpus.size())];
     for (std::size_t k = m.below(4) + 1; k > 0; --k) m.mutate(text);
-    const std::vector<Override> overrides = m.overrides();
+    const std::vector<Override> sets = overrides(m);
     const auto start = std::chrono::steady_clock::now();
     try {
-      load_case_text(kName, text, {}, overrides);
+      load_case_text(kName, text, {}, sets);
       ++accepted;
     } catch (const InputError& e) {
       ++refused;
@@ -148,9 +97,8 @@ TEST(CaseFuzz, NoCrashNoStallEveryErrorLocated) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << "input " << i << ": not an InputError: " << e.what() << "\n" << text;
     }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, kPerInputSeconds) << "input " << i << "\n" << text;
+    const double seconds = fuzz::seconds_since(start);
+    EXPECT_LT(seconds, fuzz::kPerInputSeconds) << "input " << i << "\n" << text;
   }
   // Both sides are exercised: some mutations keep a valid case, most break it.
   EXPECT_GT(accepted, 0);
