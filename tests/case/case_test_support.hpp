@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "core/error.hpp"
+#include "input_error.hpp"
 #include "materials/material.hpp"
 
 namespace coldspray::case_file::testing {
@@ -16,22 +17,9 @@ inline std::string case_path(const std::string& name) {
   return std::string(COLDSPRAY_TEST_DATA) + "/cases/" + name;
 }
 
-// The InputError that `action` throws; a test failure if it throws none.
-template <class Action>
-InputError input_error(Action&& action) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return InputError("", "", "");
-}
-
-inline ::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
+// The InputError expectations all the tests share (tests/support/input_error.hpp).
+using coldspray::testing::contains;
+using coldspray::testing::input_error;
 
 inline void expect_same(const materials::strength::Elastic&, const materials::strength::Elastic&) {}
 inline void expect_same(const materials::strength::VonMises& a,

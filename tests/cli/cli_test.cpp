@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "table.hpp"
 #include "temp_dir.hpp"
@@ -123,8 +122,7 @@ TEST(Cli, RunThatLosesABodyStopsWithStatus3AndKeepsALastSnapshot) {
   const fs::path out = fs::path(dir) / "result";
   EXPECT_TRUE(fs::exists(out / "snapshots.pvd"));
   EXPECT_TRUE(fs::exists(out / "case.resolved.yaml"));
-  std::ifstream summary(out / "summary.json");
-  const std::string text((std::istreambuf_iterator<char>(summary)), {});
+  const std::string text = read_text(out / "summary.json");
   EXPECT_NE(text.find("\"status\": \"fault: body 'block'"), std::string::npos) << text;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -39,11 +40,6 @@ std::string write(const fs::path& dir, const std::string& name, const std::strin
   const fs::path path = dir / name;
   std::ofstream(path) << text;
   return path.string();
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {

@@ -5,10 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "table.hpp"
 #include "temp_dir.hpp"
@@ -53,8 +53,7 @@ TEST(Faults, UnstableAbsorbingFacesStopWithStatus3AtTheFirstCheck) {
   EXPECT_EQ(f.summary["steps"], 10);
   // The last snapshot, at the fault's step, listed in the collection.
   EXPECT_TRUE(fs::exists(f.out / "snapshots/step_00000010.vtu"));
-  std::ifstream pvd(f.out / "snapshots.pvd");
-  const std::string collection((std::istreambuf_iterator<char>(pvd)), {});
+  const std::string collection = read_text(f.out / "snapshots.pvd");
   EXPECT_NE(collection.find("snapshots/step_00000010.vtu"), std::string::npos) << collection;
   // And the checkpoint of the state at the fault (docs/reliability.md).
   EXPECT_TRUE(fs::exists(f.out / "checkpoints/step_00000010.h5"));

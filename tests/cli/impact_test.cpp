@@ -15,6 +15,7 @@
 
 #include "case/load.hpp"
 #include "cli/impact_case.hpp"
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -24,11 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kExamples = fs::path(COLDSPRAY_SOURCE_DIR) / "examples" / "coldspray";
 const std::string kCase22 = "impact --material al-ptw --diameter 22um --velocity 790m/s";
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 std::vector<fs::path> example_files() {
   std::vector<fs::path> files;

@@ -6,12 +6,12 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include "case/load.hpp"
 #include "cli/case_text.hpp"
 #include "core/units.hpp"
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -20,11 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 const std::string kImpact = "impact --material al-ptw --diameter 22um --velocity 790m/s";
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 TEST(NumberSyntax, ImpactWritesTheEnergyItWasGiven) {
   const std::string dir = make_temp_dir("numbers");

@@ -6,10 +6,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <set>
 #include <string>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -25,11 +25,6 @@ const std::string kShortRun = "run '" + std::string(COLDSPRAY_SOURCE_DIR) +
 const std::string kMaterialTest =
     "material-test --material al-ptw --strain-rate 1e3 --final-strain -0.1 --steps 20";
 
-std::string text_of(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
 TEST(OutputPaths, AnOutThatIsAFileIsBadInput) {
   const std::string dir = make_temp_dir("out");
   std::ofstream(fs::path(dir) / "taken") << "mine\n";
@@ -37,7 +32,7 @@ TEST(OutputPaths, AnOutThatIsAFileIsBadInput) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("output folder 'taken': it is a file, not a folder"), std::string::npos)
       << r.output;
-  EXPECT_EQ(text_of(fs::path(dir) / "taken"), "mine\n");
+  EXPECT_EQ(read_text(fs::path(dir) / "taken"), "mine\n");
 }
 
 TEST(OutputPaths, AnOutUnderAFileIsBadInput) {
@@ -59,7 +54,7 @@ TEST(OutputPaths, ASweepOutThatIsAFileIsBadInput) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("output folder 'taken': it is a file, not a folder"), std::string::npos)
       << r.output;
-  EXPECT_EQ(text_of(fs::path(dir) / "taken"), "mine\n");
+  EXPECT_EQ(read_text(fs::path(dir) / "taken"), "mine\n");
 }
 
 // /proc takes no new folders and no files, even from root.
@@ -90,7 +85,7 @@ TEST(OutputPaths, MaterialTestDoesNotReplaceASymbolicLink) {
             std::string::npos)
       << r.output;
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(text_of(target), "keep\n");
+  EXPECT_EQ(read_text(target), "keep\n");
 }
 
 TEST(OutputPaths, MaterialTestDoesNotReplaceAFifo) {
@@ -108,7 +103,7 @@ TEST(OutputPaths, MaterialTestStillReplacesARegularFile) {
   std::ofstream(fs::path(dir) / "old.csv") << "old\n";
   const auto r = run_coldspray(kMaterialTest + " --out old.csv", dir);
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_EQ(text_of(fs::path(dir) / "old.csv").rfind("time,strain", 0), 0u);
+  EXPECT_EQ(read_text(fs::path(dir) / "old.csv").rfind("time,strain", 0), 0u);
 }
 
 TEST(OutputPaths, ImpactWriteCaseDoesNotReplaceASymbolicLink) {
@@ -122,7 +117,7 @@ TEST(OutputPaths, ImpactWriteCaseDoesNotReplaceASymbolicLink) {
   EXPECT_NE(r.output.find("--write-case: 'case.yaml' is a symbolic link"), std::string::npos)
       << r.output;
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(text_of(target), "keep\n");
+  EXPECT_EQ(read_text(target), "keep\n");
 }
 
 // The snapshots in DIR/snapshots and those DIR/snapshots.pvd lists.
@@ -133,7 +128,7 @@ std::set<std::string> snapshot_files(const fs::path& out) {
   return files;
 }
 std::set<std::string> listed_snapshots(const fs::path& out) {
-  const std::string pvd = text_of(out / "snapshots.pvd");
+  const std::string pvd = read_text(out / "snapshots.pvd");
   // (Not std::regex: GCC 12 warns inside <regex> under the sanitizer build's -O2.)
   const std::string key = "file=\"";
   std::set<std::string> listed;
@@ -166,7 +161,7 @@ TEST(OutputPaths, AReusedOutFolderIsRefusedWithoutOverwriteAndClearedWithIt) {
   ASSERT_EQ(second.status, 0) << second.output;
   EXPECT_EQ(snapshot_files(out).size(), 2u);
   EXPECT_EQ(snapshot_files(out), listed_snapshots(out));
-  EXPECT_EQ(text_of(out / "notes.txt"), "mine\n");
+  EXPECT_EQ(read_text(out / "notes.txt"), "mine\n");
 }
 
 }  // namespace

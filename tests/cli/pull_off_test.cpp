@@ -6,13 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <thread>
 
 #include "pd/bulk_fracture.hpp"
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "table.hpp"
 #include "temp_dir.hpp"
@@ -26,11 +26,6 @@ const std::string kBlocks = std::string(COLDSPRAY_TEST_DATA) + "/cli/pd-bonded-b
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // The 36 bonds of the blocks' interface (tests/data/cli/pd-bonded-blocks.yaml), each between
@@ -93,7 +88,7 @@ TEST(PullOff, OneAndTwoThreadsGiveTheSameBits) {
     ASSERT_EQ(r.status, 0) << r.output;
   }
   for (const char* file : {"pull_off.csv", "summary.json"})
-    EXPECT_EQ(read_file(dir / "pulled-1" / file), read_file(dir / "pulled-2" / file)) << file;
+    EXPECT_EQ(read_text(dir / "pulled-1" / file), read_text(dir / "pulled-2" / file)) << file;
 }
 
 // Shear pushes along x: the blocks (no symmetry plane) take it; a quarter model, whose plane x = 0

@@ -10,12 +10,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -34,11 +34,6 @@ std::string short_run(const fs::path& out, const std::string& extra = "") {
          out.string() + "' " + extra;
 }
 
-std::string contents(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::vector<fs::path> files_in(const fs::path& dir) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
@@ -50,7 +45,7 @@ std::vector<fs::path> files_in(const fs::path& dir) {
 std::vector<std::pair<fs::path, std::string>> snapshot_of(const fs::path& run) {
   std::vector<std::pair<fs::path, std::string>> all;
   for (const auto& e : fs::recursive_directory_iterator(run))
-    if (e.is_regular_file()) all.emplace_back(e.path(), contents(e.path()));
+    if (e.is_regular_file()) all.emplace_back(e.path(), read_text(e.path()));
   std::sort(all.begin(), all.end());
   return all;
 }
@@ -85,7 +80,7 @@ void expect_refused(const fs::path& run, const std::string& message,
 TEST(RunFolderIntegrity, AFlippedBitAnywhereInTheLatestCheckpointIsRefused) {
   const fs::path run = finished_run(fs::path(make_temp_dir()) / "run");
   const fs::path latest = latest_checkpoint(run);
-  const std::string original = contents(latest);
+  const std::string original = read_text(latest);
   // In the seal's header, HDF5's superblock, and through the data, 17 places in all.
   std::vector<std::uintmax_t> places = {0, 20, 40, 300, 511, 512, 600};
   for (int k = 1; k <= 10; ++k) places.push_back(original.size() * k / 11);
@@ -124,7 +119,7 @@ TEST(RunFolderIntegrity, AChangedCaseFileIsRefused) {
 
 TEST(RunFolderIntegrity, AMissingOrChangedTableIsRefused) {
   const fs::path run = finished_run(fs::path(make_temp_dir()) / "run");
-  const std::string history = contents(run / "history.csv");
+  const std::string history = read_text(run / "history.csv");
   fs::remove(run / "history.csv");
   expect_refused(run, "history.csv: is missing");
   // Cut mid-row, before the length the first checkpoint recorded.
@@ -177,7 +172,7 @@ TEST(RunFolderIntegrity, AFailedWriteIsAFaultThatLeavesNoPartialCheckpoint) {
   EXPECT_EQ(r.status, 3) << r.output;
   EXPECT_TRUE(has(r, "fault: writing '")) << r.output;
   EXPECT_TRUE(has(r, "File too large")) << r.output;
-  const nlohmann::json summary = nlohmann::json::parse(contents(run / "summary.json"));
+  const nlohmann::json summary = nlohmann::json::parse(read_text(run / "summary.json"));
   EXPECT_EQ(summary["status"].get<std::string>().rfind("fault: writing '", 0), 0u) << summary;
   EXPECT_TRUE(files_in(run / "checkpoints").empty()) << "no checkpoint, whole or partial";
   const auto restart = run_coldspray("run --quiet --restart '" + run.string() + "'");
@@ -195,7 +190,7 @@ TEST(RunFolderIntegrity, ASecondProcessIsRefusedTheFolderNamingTheFirst) {
                        "--quiet", "--set", "solver.end_time=1us", "--out", out.string()});
   bool held = false;
   for (int k = 0; k < 12000 && !held; ++k) {
-    held = fs::exists(out / ".coldspray.lock") && !contents(out / ".coldspray.lock").empty();
+    held = fs::exists(out / ".coldspray.lock") && !read_text(out / ".coldspray.lock").empty();
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   if (!held) {

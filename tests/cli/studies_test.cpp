@@ -6,11 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/calibration_file.hpp"
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -19,12 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::make_temp_dir;
+using testing::read_text;
 using testing::run_coldspray;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
 
 std::size_t count_entries(const fs::path& folder) {
   std::size_t n = 0;
@@ -215,10 +211,7 @@ TEST(CliStudies, EveryExampleCalibrationMakesValidCases) {
 // with the debonding law on (docs/studies.md); unset, the law stays off.
 TEST(CliStudies, TheCalibrationFilesDebondReachesItsCases) {
   const std::string dir = make_temp_dir();
-  std::string text = [] {
-    std::ifstream in(kCalibration);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-  }();
+  std::string text = read_text(kCalibration);
   const CalibrationFile off = read_calibration_file(kCalibration);
   const auto runs = studies::calibration_runs(off.plan, "out");
   EXPECT_EQ(calibration_case(off, runs.front()).bonding.debond.law, case_file::DebondLaw::None);
@@ -238,10 +231,7 @@ struct BadFile {
 };
 
 TEST(CliStudies, CalibrationFileErrorsNameLineAndKey) {
-  const std::string original = [] {
-    std::ifstream in(kCalibration);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-  }();
+  const std::string original = read_text(kCalibration);
   const BadFile cases[] = {
       {"unknown key", "end_time: 3 ns", "end_time: 3 ns\nend_tme: 4 ns",
        "calib.yaml:7:1: key 'end_tme': unknown key"},

@@ -4,10 +4,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
+#include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
 
@@ -16,12 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::make_temp_dir;
+using testing::read_text;
 using testing::run_coldspray;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
 
 // The escape case: a block at 1 m/s stays on its small grid; at 1000 m/s it leaves it (a fault).
 const std::string kSweep = "sweep '" + std::string(COLDSPRAY_TEST_DATA) +

@@ -1,17 +1,13 @@
 #include "fuzz_support.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+
+#include "read_text.hpp"
 
 namespace coldspray::fuzz {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
+using testing::read_text;
 
 std::vector<std::string> yaml_texts(const std::vector<fs::path>& folders, bool recursive) {
   std::vector<std::string> out;

@@ -37,8 +37,6 @@ constexpr int budget(int release, int sanitized) { return kSanitized ? sanitized
 // an input near this bound is a stall in the making (the 100 000 keys once took 48 s).
 inline constexpr double kPerInputSeconds = 2.0;
 
-std::string read_text(const std::filesystem::path& path);
-
 // The texts of the .yaml files in `folders` (and in their subfolders if `recursive`), sorted:
 // the directory order is not fixed, the budget's draws must be.
 std::vector<std::string> yaml_texts(const std::vector<std::filesystem::path>& folders,

@@ -19,11 +19,13 @@
 #include "case/load.hpp"
 #include "core/error.hpp"
 #include "fuzz_support.hpp"
+#include "read_text.hpp"
 
 namespace coldspray::case_file {
 namespace {
 
 namespace fs = std::filesystem;
+using coldspray::testing::read_text;
 
 const int kInputs = fuzz::budget(3000, 1000);
 constexpr const char* kName = "fuzzed.yaml";
@@ -135,7 +137,7 @@ struct Seed {
 std::vector<Seed> seeds() {
   std::vector<Seed> out;
   for (std::string_view c : kCases) {
-    Seed s{fuzz::read_text(fs::path(COLDSPRAY_SOURCE_DIR "/examples") / c), {}};
+    Seed s{read_text(fs::path(COLDSPRAY_SOURCE_DIR "/examples") / c), {}};
     collect_paths(YAML::Load(s.text), "", s.paths);
     out.push_back(std::move(s));
   }
@@ -236,8 +238,7 @@ TEST(SetFuzz, ReproducersAreRefusedAtTheirSet) {
   for (const auto& entry : fs::directory_iterator(COLDSPRAY_TEST_DATA "/fuzz/set")) {
     int refused = 0;
     for (const Seed& seed : cases)
-      refused +=
-          check_sets(seed, {fuzz::read_text(entry.path())}, entry.path().filename().string());
+      refused += check_sets(seed, {read_text(entry.path())}, entry.path().filename().string());
     EXPECT_GT(refused, 0) << entry.path();
   }
 }

@@ -8,22 +8,19 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "case/load.hpp"
 #include "pd/setup.hpp"
 #include "pd/stepper.hpp"
+#include "read_text.hpp"
+#include "temp_dir.hpp"
 
 namespace coldspray::run {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using testing::read_text;
 
 // The values of the appended-raw array `name` (a UInt64 byte count, then the data).
 template <class T>
@@ -40,39 +37,30 @@ std::vector<T> array(const std::string& vtu, const std::string& name) {
   return values;
 }
 
-std::filesystem::path test_folder() {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() /
-      ("coldspray_snapshot_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::create_directories(folder);
-  return folder;
-}
-
 TEST(Snapshot, PeridynamicsWritesEachPointsNeighbourCount) {
-  const std::filesystem::path folder = test_folder();
+  const std::filesystem::path folder = testing::make_temp_dir("snapshot");
   const std::string dir = folder.string();
   pd::State s = pd::build_state(case_file::load_case(
       std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/pd-elastic-spheres.yaml"));
   ASSERT_EQ(s.family_size.size(), s.points.size());
   write_snapshot(s, dir + "/pd.vtu");
   const std::vector<std::int32_t> written =
-      array<std::int32_t>(read_file(dir + "/pd.vtu"), "neighbours");
+      array<std::int32_t>(read_text(dir + "/pd.vtu"), "neighbours");
   ASSERT_EQ(written.size(), s.points.size());
   for (std::size_t i = 0; i < written.size(); ++i)
     ASSERT_EQ(written[i], static_cast<std::int32_t>(s.families.begin[i + 1] - s.families.begin[i]));
 
   s.family_size.clear();  // as in an MPM run
   write_snapshot(s, dir + "/mpm.vtu");
-  const std::string mpm = read_file(dir + "/mpm.vtu");
+  const std::string mpm = read_text(dir + "/mpm.vtu");
   EXPECT_EQ(mpm.find("neighbours"), std::string::npos);
   EXPECT_NE(mpm.find("Name=\"plastic_work\""), std::string::npos);
-  std::filesystem::remove_all(folder);
 }
 
 // 40 steps of the coarse quarter Cu impact at 500 m/s: the snapshot's plastic_work is each
 // point's accumulated plastic work over its reference volume, and some points have done some.
 TEST(Snapshot, WritesThePlasticWorkPerReferenceVolume) {
-  const std::filesystem::path folder = test_folder();
+  const std::filesystem::path folder = testing::make_temp_dir("snapshot");
   const case_file::Case c = case_file::load_case(
       std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/pd-quarter-impact.yaml",
       {{"symmetry.x", "0 um"}, {"symmetry.y", "0 um"}});
@@ -84,7 +72,7 @@ TEST(Snapshot, WritesThePlasticWorkPerReferenceVolume) {
   const bodies::Points& P = s.points;
   write_snapshot(s, (folder / "pd.vtu").string());
   const std::vector<double> written =
-      array<double>(read_file((folder / "pd.vtu").string()), "plastic_work");
+      array<double>(read_text((folder / "pd.vtu").string()), "plastic_work");
   ASSERT_EQ(written.size(), P.size());
   double plastic = 0.0;
   for (std::size_t p = 0; p < P.size(); ++p) {
@@ -92,7 +80,6 @@ TEST(Snapshot, WritesThePlasticWorkPerReferenceVolume) {
     plastic += P.plastic_work[p];
   }
   EXPECT_GT(plastic, 0.0);
-  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

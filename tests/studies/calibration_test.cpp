@@ -11,8 +11,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <string>
+
+#include "read_text.hpp"
+#include "temp_dir.hpp"
 
 namespace coldspray::studies {
 namespace {
@@ -93,11 +95,7 @@ std::vector<GridResult> analyse_synthetic(
     const std::string& tag, std::string* json = nullptr,
     const std::function<bool(double, double)>& undecided = [](double, double) { return false; },
     std::string* runs_csv = nullptr) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("coldspray_calibration_" + tag + "_" +
-       std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = testing::make_temp_dir("calibration-" + tag);
   for (const CalibrationRun& run : calibration_runs(plan, dir)) {
     std::filesystem::create_directories(run.folder);
     const bool stuck = bonds(run.size, run.x1, run.x2);
@@ -109,13 +107,8 @@ std::vector<GridResult> analyse_synthetic(
         << R"(", "separation_speed": 0.5, "margin": 1.5}}}})";
   }
   const std::vector<GridResult> results = analyse_calibration(plan, dir, tag);
-  auto text = [&dir](const char* name) {
-    std::ifstream in(dir / name);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  };
-  if (json) *json = text("calibration.json");
-  if (runs_csv) *runs_csv = text("runs.csv");
-  std::filesystem::remove_all(dir);
+  if (json) *json = testing::read_text(dir / "calibration.json");
+  if (runs_csv) *runs_csv = testing::read_text(dir / "runs.csv");
   return results;
 }
 

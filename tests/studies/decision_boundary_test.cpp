@@ -5,15 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "read_text.hpp"
+#include "temp_dir.hpp"
 
 namespace coldspray::studies {
 namespace {
@@ -226,15 +226,9 @@ TEST(StudiesBoundary, WritesTheCurvesAsCsv) {
   write_boundary_csv(out, b);
   EXPECT_EQ(out.str(), "x1,x2,curve\n0,1,0\n0.5,1.5,0\n2,3,1\n");
 
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() /
-      ("coldspray_boundary_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-       "_" + std::to_string(reinterpret_cast<std::uintptr_t>(&b)) + ".csv");
+  const std::filesystem::path path = testing::make_temp_dir("boundary") + "/boundary.csv";
   write_boundary_csv(path, b);
-  std::ifstream in(path);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::filesystem::remove(path);
-  EXPECT_EQ(text, out.str());
+  EXPECT_EQ(testing::read_text(path), out.str());
 }
 
 }  // namespace

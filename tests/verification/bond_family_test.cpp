@@ -14,13 +14,13 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "case/load.hpp"
+#include "read_text.hpp"
 #include "run/run.hpp"
 #include "temp_dir.hpp"
 
@@ -28,6 +28,7 @@ namespace coldspray::run {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::read_text;
 
 case_file::Case bonding_impact(const std::string& critical_energy,
                                const std::string& velocity = "-800 m/s") {
@@ -38,11 +39,6 @@ case_file::Case bonding_impact(const std::string& critical_energy,
        {"solver.end_time", "10 ns"},
        {"output.snapshot_interval", "5 ns"},
        {"metrics.verdict_window", "10 ns"}});
-}
-
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Every result file under the folder, by path relative to it: not the checkpoints, which a
@@ -60,7 +56,7 @@ std::set<std::string> files_under(const fs::path& folder) {
 }
 
 nlohmann::json summary_without_timing(const fs::path& folder) {
-  nlohmann::json j = nlohmann::json::parse(contents(folder / "summary.json"));
+  nlohmann::json j = nlohmann::json::parse(read_text(folder / "summary.json"));
   for (const char* key : {"wall_seconds", "particle_steps_per_second", "shared_steps"})
     j.erase(key);
   return j;
@@ -108,10 +104,11 @@ TEST(BondFamily, MembersWriteWhatTheirOwnRunsWrite) {
     EXPECT_EQ(files_under(family), names) << energies[i];
     for (const std::string& name : names) {
       if (name == "summary.json") continue;
-      EXPECT_TRUE(contents(solo / name) == contents(family / name)) << energies[i] << ": " << name;
+      EXPECT_TRUE(read_text(solo / name) == read_text(family / name))
+          << energies[i] << ": " << name;
     }
     EXPECT_EQ(summary_without_timing(solo), summary_without_timing(family)) << energies[i];
-    const nlohmann::json s = nlohmann::json::parse(contents(family / "summary.json"));
+    const nlohmann::json s = nlohmann::json::parse(read_text(family / "summary.json"));
     shared[i] = s["shared_steps"].get<long>();
     steps[i] = s["steps"].get<long>();
     extensions[i] = s["system"]["extensions"].get<int>();
