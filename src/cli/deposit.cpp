@@ -21,6 +21,7 @@
 #include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
+#include "geometry/shape.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "run/checkpoints.hpp"
@@ -45,7 +46,7 @@ void check_same_particles(const case_file::Case& c, const studies::Placement& pl
   bool same = c.bodies.size() == names.size() + 1;
   for (std::size_t i = 0; same && i < names.size(); ++i) {
     const studies::PlacedParticle& p = placement.particles[i];
-    const auto* sphere = std::get_if<case_file::Sphere>(&c.bodies[i].shape);
+    const auto* sphere = std::get_if<geometry::Sphere>(&c.bodies[i].shape);
     // The case file holds 12 significant digits of each length and speed.
     const double tolerance = 1e-9 * p.diameter;
     same = c.bodies[i].name == names[i] && sphere &&

@@ -8,6 +8,7 @@
 
 #include "cli/deposit_file.hpp"
 #include "cli/impact_case.hpp"
+#include "geometry/shape.hpp"
 
 namespace coldspray::cli {
 
@@ -16,7 +17,7 @@ std::vector<std::string> particle_names(int count);
 
 // The substrate's box: the patch and the file's margin on each side, `thickness` deep below its
 // top face z = 0.
-case_file::Box substrate_box(const DepositFile& file);
+geometry::Box substrate_box(const DepositFile& file);
 
 // The substrate's top face is z = 0; it spans the patch and the file's margin on each side.
 // Bodies: the particles in arrival order, then the substrate (the highest body, as the thesis'

@@ -6,6 +6,7 @@
 #include "case/size_limits.hpp"
 #include "cli/deposit_case.hpp"
 #include "core/error.hpp"
+#include "geometry/shape.hpp"
 #include "studies/deposit_room.hpp"
 
 namespace coldspray::cli {
@@ -30,7 +31,7 @@ void check_points(const DepositFile& file, const std::vector<double>& diameters,
                   const std::vector<case_file::Override>& sets) {
   double particles = 0.0;
   for (const double d : diameters)
-    particles += case_file::lattice_points(case_file::Sphere{{0, 0, 0}, 0.5 * d}, file.spacing);
+    particles += case_file::lattice_points(geometry::Sphere{{0, 0, 0}, 0.5 * d}, file.spacing);
   const double substrate = case_file::lattice_points(substrate_box(file), file.spacing);
   // The generated case is an MPM case with no cut at the grid's faces (deposit_case.cpp).
   case_file::Case c;

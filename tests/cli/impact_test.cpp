@@ -89,12 +89,12 @@ TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
   const case_file::Case c = case_file::load_case((fs::path(dir) / "case.yaml").string());
   EXPECT_EQ(c.name, "impact-al-ptw-22um-790");
   ASSERT_EQ(c.bodies.size(), 2u);
-  const auto& particle = std::get<case_file::Sphere>(c.bodies[0].shape);
+  const auto& particle = std::get<geometry::Sphere>(c.bodies[0].shape);
   EXPECT_DOUBLE_EQ(particle.radius, 11e-6);
   EXPECT_DOUBLE_EQ(particle.center.z(), 11e-6);  // touching the substrate's top z = 0
   EXPECT_DOUBLE_EQ(c.bodies[0].velocity.z(), -790.0);
   EXPECT_DOUBLE_EQ(c.bodies[0].temperature, 298.0);
-  const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
+  const auto& substrate = std::get<geometry::Cylinder>(c.bodies[1].shape);
   EXPECT_DOUBLE_EQ(substrate.radius, 44e-6);  // 4 d across
   EXPECT_DOUBLE_EQ(substrate.height, 44e-6);  // 2 d high
   EXPECT_DOUBLE_EQ(substrate.base_center.z() + substrate.height, 0.0);
@@ -119,7 +119,7 @@ TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
 // sets the cells per diameter of the similar set-up.
 TEST(Impact, TheThesisSetUpAndTheResolution) {
   const case_file::Case c = written_case(kCase22 + " --setup thesis");
-  const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
+  const auto& substrate = std::get<geometry::Cylinder>(c.bodies[1].shape);
   EXPECT_DOUBLE_EQ(substrate.radius, 22e-6);  // Table 5.3: 44 um across for 22 um
   EXPECT_DOUBLE_EQ(substrate.height, 10e-6);
   EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.7e-6);
@@ -200,7 +200,7 @@ TEST(Impact, CoarseningReachesTheSubstrate) {
   ASSERT_TRUE(c.bodies[1].coarsening);
   EXPECT_FALSE(c.bodies[0].coarsening);
   EXPECT_EQ(c.bodies[1].coarsening->levels, 1);
-  const auto& fine = std::get<case_file::Cylinder>(c.bodies[1].coarsening->fine);
+  const auto& fine = std::get<geometry::Cylinder>(c.bodies[1].coarsening->fine);
   EXPECT_NEAR(fine.radius, 0.65 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.height, 0.36 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.base_center.z(), -0.36 * 22e-6, 1e-12);
@@ -234,7 +234,7 @@ TEST(Impact, PeridynamicsBuildsThePdPapersSetUp) {
   EXPECT_EQ(c.bodies.at(0).material, "cu-jc");
   EXPECT_EQ(c.bodies.at(1).material, "cu-jc");
   EXPECT_NEAR(c.bodies.at(0).spacing, 0.6e-6, 1e-15);
-  const auto& cylinder = std::get<case_file::Cylinder>(c.bodies.at(1).shape);
+  const auto& cylinder = std::get<geometry::Cylinder>(c.bodies.at(1).shape);
   EXPECT_NEAR(cylinder.radius, 60e-6, 1e-15);
   EXPECT_NEAR(cylinder.height, 60e-6, 1e-15);
   EXPECT_NEAR(cylinder.base_center.z(), -60e-6, 1e-15);
@@ -263,11 +263,11 @@ TEST(Impact, ContactModelOneLiftsTheParticleToItsCutOff) {
       "--contact lennard-jones --beta 0.004");
   EXPECT_EQ(c.contact.model, case_file::ContactModel::LennardJones);
   EXPECT_EQ(c.contact.beta, 0.004);
-  EXPECT_NEAR(std::get<case_file::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
+  EXPECT_NEAR(std::get<geometry::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
   const case_file::Case repulsive =
       written_case("impact --solver peridynamics --diameter 30um --velocity 500m/s");
   EXPECT_EQ(repulsive.contact.model, case_file::ContactModel::Repulsive);
-  EXPECT_NEAR(std::get<case_file::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
+  EXPECT_NEAR(std::get<geometry::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
 }
 
 // Model 1 on bodies seeded touching would push them apart at t = 0 with (r0/r)^13: refused.

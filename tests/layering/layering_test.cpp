@@ -15,8 +15,8 @@ namespace {
 const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"core", {}},
     {"materials", {"core"}},
-    {"case", {"core", "materials"}},
-    {"geometry", {"core", "case"}},
+    {"geometry", {"core"}},
+    {"case", {"core", "materials", "geometry"}},
     {"io", {"core"}},
     {"material_test", {"core", "materials"}},
     {"bonding", {"core", "case", "materials"}},
@@ -29,7 +29,7 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
      {"core", "case", "materials", "io", "bodies", "bonding", "metrics", "mpm", "pd",
       "checkpoint"}},
     {"studies", {"core", "case", "io", "run"}},
-    {"cli", {"core", "case", "io", "material_test", "mpm", "pd", "run", "studies"}},
+    {"cli", {"core", "case", "geometry", "io", "material_test", "mpm", "pd", "run", "studies"}},
 };
 
 // The folder of a line `#include "folder/file.hpp"`, or "" for any other line. (Not std::regex:
