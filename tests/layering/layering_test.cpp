@@ -1,6 +1,8 @@
 // The folders of src/ as layers (docs/solvers.md): a folder includes only from the folders it may
 // depend on, so that what the solvers share (bodies/, metrics/) never reaches into one solver.
-// Reads every #include "folder/..." of src/ and fails on one that crosses the layers.
+// Reads every #include "folder/..." of src/ and fails on one that crosses the layers; and every
+// one of bench/ and tests/, which may not include cli/; and follows the headers the solvers
+// include, which may not reach yaml-cpp.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -31,7 +33,10 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
      {"core", "case", "materials", "io", "bodies", "bonding", "metrics", "mpm", "pd",
       "checkpoint"}},
     {"studies", {"core", "case", "io", "run"}},
-    {"cli", {"core", "case", "geometry", "io", "material_test", "mpm", "pd", "run", "studies"}},
+    // The case builders and study-file schemas, below the command line so that the benchmarks
+    // and any other front end build an impact without it.
+    {"setups", {"core", "case", "geometry", "studies"}},
+    {"cli", {"core", "case", "geometry", "io", "material_test", "pd", "run", "studies", "setups"}},
 };
 
 // The path of a line `#include "path"` (open '"') or `#include <path>` (open '<'), or "" for any
@@ -73,6 +78,26 @@ TEST(Layering, EveryIncludeStaysWithinItsLayers) {
     }
   }
   EXPECT_GT(files, 100);
+}
+
+// The command line is the top layer: the benchmarks and the tests build their cases through
+// setups/, and include nothing of cli/.
+TEST(Layering, BenchmarksAndTestsIncludeNoCommandLineCode) {
+  int files = 0;
+  for (const char* folder : {"bench", "tests"}) {
+    const std::filesystem::path root = std::filesystem::path(COLDSPRAY_SOURCE_DIR) / folder;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+      if (!entry.is_regular_file()) continue;
+      ++files;
+      std::ifstream in(entry.path());
+      std::string line;
+      for (int n = 1; std::getline(in, line); ++n)
+        EXPECT_NE(included_folder(line), "cli")
+            << folder << "/" << entry.path().lexically_relative(root).string() << ":" << n
+            << " includes cli/: build cases through setups/";
+    }
+  }
+  EXPECT_GT(files, 50);
 }
 
 // The solvers and what they stand on read a parsed Case, never its YAML: no file of these folders

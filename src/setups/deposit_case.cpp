@@ -1,14 +1,28 @@
-#include "cli/deposit_case.hpp"
+#include "setups/deposit_case.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
 #include "case/grid_domain.hpp"
-#include "cli/case_text.hpp"
+#include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "setups/case_text.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
+
+studies::Placement deposit_placement(const DepositFile& file) {
+  studies::Placement placement = studies::place_particles(file.plan);
+  if (placement.unplaced >= 0) {
+    const std::size_t k = static_cast<std::size_t>(placement.unplaced);
+    throw InputError(
+        file.patch_where, "patch",
+        fmt::format("particle {} of {} found no place {} um clear of the particles placed before "
+                    "it in {} draws: widen the patch or the arrival_window, or spray fewer",
+                    k + 1, file.plan.count, file.plan.clearance * 1e6, studies::kPlacementTries));
+  }
+  return placement;
+}
 
 std::vector<std::string> particle_names(int count) {
   const int digits = static_cast<int>(std::to_string(count).size());
@@ -143,4 +157,4 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
   return g;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

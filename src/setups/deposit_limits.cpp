@@ -1,15 +1,15 @@
-#include "cli/deposit_limits.hpp"
+#include "setups/deposit_limits.hpp"
 
 #include <fmt/format.h>
 
 #include "case/size_estimate.hpp"
 #include "case/size_limits.hpp"
-#include "cli/deposit_case.hpp"
 #include "core/error.hpp"
 #include "geometry/shape.hpp"
+#include "setups/deposit_case.hpp"
 #include "studies/deposit_room.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 namespace {
 
@@ -57,4 +57,4 @@ void check_deposit_size(const DepositFile& file, const std::vector<case_file::Ov
   check_points(file, diameters, sets);
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

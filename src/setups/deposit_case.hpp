@@ -6,11 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "cli/deposit_file.hpp"
-#include "cli/impact_case.hpp"
 #include "geometry/shape.hpp"
+#include "setups/deposit_file.hpp"
+#include "setups/impact_case.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
+
+// The file's particles placed (studies::place_particles), or InputError at its patch when one
+// found no place.
+studies::Placement deposit_placement(const DepositFile& file);
 
 // The particles' body names in arrival order: p1..pN, zero-padded to N's digits (p01..p10).
 std::vector<std::string> particle_names(int count);
@@ -24,4 +28,4 @@ geometry::Box substrate_box(const DepositFile& file);
 // multi-particle rule has it, §5.2.3). Runs to the last arrival plus the file's settle time.
 GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& placement);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups
