@@ -9,16 +9,16 @@
 #include <string>
 
 #include "case/load.hpp"
-#include "cli/impact_case.hpp"
 #include "pd/setup.hpp"
 #include "pd/stepper.hpp"
+#include "setups/impact_case.hpp"
 
 namespace {
 
 using namespace coldspray;
 
 void impact(benchmark::State& bench, double points_across) {
-  cli::ImpactSpec spec;
+  setups::ImpactSpec spec;
   spec.solver = case_file::Method::Peridynamics;
   spec.material = "cu-jc";
   spec.diameter = 30e-6;
@@ -27,7 +27,7 @@ void impact(benchmark::State& bench, double points_across) {
   spec.bonding = "none";
   spec.spacing = spec.diameter / points_across;
   spec.command = "bench/pd_throughput";
-  const cli::GeneratedCase g = cli::impact_case(spec);
+  const setups::GeneratedCase g = setups::impact_case(spec);
   const case_file::Case c = case_file::load_case_text(g.name + ".yaml", g.yaml, {}, {});
   pd::State s = pd::build_state(c);
   auto advance = [&] {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bodies/material_state.hpp"
-#include "case/key_locations.hpp"
+#include "case/located_error.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "materials/stress_update.hpp"

@@ -7,37 +7,15 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
+#include "geometry/shape.hpp"
 #include "materials/artificial_viscosity.hpp"
 #include "materials/material.hpp"
 
 namespace coldspray::case_file {
 
 using Vec3 = Eigen::Vector3d;
-
-struct Sphere {
-  Vec3 center = Vec3::Zero();
-  double radius = 0.0;
-
-  friend bool operator==(const Sphere&, const Sphere&) = default;
-};
-// Axis along z, from base_center up by height.
-struct Cylinder {
-  Vec3 base_center = Vec3::Zero();
-  double radius = 0.0;
-  double height = 0.0;
-
-  friend bool operator==(const Cylinder&, const Cylinder&) = default;
-};
-struct Box {
-  Vec3 min = Vec3::Zero();
-  Vec3 max = Vec3::Zero();
-
-  friend bool operator==(const Box&, const Box&) = default;
-};
-using Shape = std::variant<Sphere, Cylinder, Box>;
 
 // Faces of a body that absorbing or fixed conditions apply to.
 enum class BodyFace { Bottom, Side, Top };
@@ -47,7 +25,7 @@ enum class BodyFace { Bottom, Side, Top };
 // from the box around `fine`, become one point each. MPM only.
 struct Coarsening {
   int levels = 1;
-  Shape fine;
+  geometry::Shape fine;
 
   friend bool operator==(const Coarsening&, const Coarsening&) = default;
 };
@@ -55,7 +33,7 @@ struct Coarsening {
 struct Body {
   std::string name;
   std::string material;  // a key of Case::materials
-  Shape shape;
+  geometry::Shape shape;
   double spacing = 0.0;  // lattice spacing of the seeded points, m
   Vec3 velocity = Vec3::Zero();
   double temperature = 298.0;       // K

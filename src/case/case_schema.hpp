@@ -83,20 +83,20 @@ struct ContactNormalText {
 bool is_folder_name(const std::string& name);
 
 template <class IO>
-void fields(IO& io, Sphere& s) {
+void fields(IO& io, geometry::Sphere& s) {
   io.vector("center", s.center, units::kLength, kRequired);
   io.quantity("radius", s.radius, units::kLength, kRequired, kPositive);
 }
 
 template <class IO>
-void fields(IO& io, Cylinder& c) {
+void fields(IO& io, geometry::Cylinder& c) {
   io.vector("base_center", c.base_center, units::kLength, kRequired);
   io.quantity("radius", c.radius, units::kLength, kRequired, kPositive);
   io.quantity("height", c.height, units::kLength, kRequired, kPositive);
 }
 
 template <class IO>
-void fields(IO& io, Box& b) {
+void fields(IO& io, geometry::Box& b) {
   io.vector("min", b.min, units::kLength, kRequired);
   io.vector("max", b.max, units::kLength, kRequired);
   io.check((b.min.array() < b.max.array()).all(), "max",

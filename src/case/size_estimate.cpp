@@ -8,7 +8,7 @@
 
 #include "case/field_rules.hpp"
 #include "case/grid_domain.hpp"
-#include "case/shape_bounds.hpp"
+#include "geometry/shape.hpp"
 #include "materials/conduction_step.hpp"
 #include "materials/stress_update.hpp"
 
@@ -21,13 +21,13 @@ struct Extent {
   double section;  // m^2, the r-z half-section (x >= 0)
 };
 
-Extent extent(const Shape& shape) {
+Extent extent(const geometry::Shape& shape) {
   using std::numbers::pi;
-  if (const auto* s = std::get_if<Sphere>(&shape))
+  if (const auto* s = std::get_if<geometry::Sphere>(&shape))
     return {4.0 / 3.0 * pi * std::pow(s->radius, 3), 0.5 * pi * s->radius * s->radius};
-  if (const auto* c = std::get_if<Cylinder>(&shape))
+  if (const auto* c = std::get_if<geometry::Cylinder>(&shape))
     return {pi * c->radius * c->radius * c->height, c->radius * c->height};
-  const auto& b = std::get<Box>(shape);
+  const auto& b = std::get<geometry::Box>(shape);
   const Vec3 size = b.max - b.min;
   return {size.prod(), std::max(0.0, b.max.x() - std::max(b.min.x(), 0.0)) * size.z()};
 }
@@ -36,7 +36,7 @@ Extent extent(const Shape& shape) {
 std::pair<Vec3, Vec3> estimated_grid_domain(const Case& c) {
   Vec3 lo = Vec3::Constant(kInfinity), hi = -lo;
   for (const Body& b : c.bodies) {
-    const Bounds box = bounding_box(b.shape);
+    const geometry::Bounds box = geometry::bounding_box(b.shape);
     lo = lo.cwiseMin(box.min);
     hi = hi.cwiseMax(box.max);
   }
@@ -74,7 +74,7 @@ std::vector<CutPlane> cut_planes(const Case& c) {
 double estimated_points(const Case& c, const Body& b) {
   const Extent e = extent(b.shape);
   if (c.solver.geometry == Geometry::Axisymmetric) return e.section / std::pow(b.spacing, 2);
-  const Bounds box = bounding_box(b.shape);
+  const geometry::Bounds box = geometry::bounding_box(b.shape);
   const Vec3 size = box.max - box.min;
   double kept = 1.0;
   for (const CutPlane& plane : cut_planes(c)) {
@@ -86,7 +86,7 @@ double estimated_points(const Case& c, const Body& b) {
   return kept * lattice_points(b.shape, b.spacing);
 }
 
-double lattice_points(const Shape& shape, double spacing) {
+double lattice_points(const geometry::Shape& shape, double spacing) {
   return extent(shape).volume / std::pow(spacing, 3);
 }
 

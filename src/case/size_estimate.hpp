@@ -19,7 +19,7 @@ double estimated_points(const Case& c, const Body& b);
 
 // The lattice sites in a whole shape in 3D, none cut away: its volume / spacing^3. For a
 // generator that sizes its case before writing it (`coldspray deposit`).
-double lattice_points(const Shape& shape, double spacing);
+double lattice_points(const geometry::Shape& shape, double spacing);
 
 // The MPM grid's nodes along x, y, z, placed as mpm/setup.cpp places them (grid.min/max, or the
 // bodies' bounding boxes plus the margin, on multiples of the cell size, a ghost layer beyond).

@@ -31,7 +31,8 @@ SizeCap cap_of(const std::optional<double>& given, const char* key, double bytes
 
 // The key that sizes a body's shape: a sphere's or cylinder's radius, a box's max corner.
 std::vector<std::string> size_key(const Body& b) {
-  return {"bodies", b.name, "shape", std::holds_alternative<Box>(b.shape) ? "max" : "radius"};
+  return {"bodies", b.name, "shape",
+          std::holds_alternative<geometry::Box>(b.shape) ? "max" : "radius"};
 }
 
 void check_points(const Document& doc, const Case& c) {

@@ -90,16 +90,17 @@ void check_solver_sections(const Document& doc, const Case& c) {
 bool on_z_axis(const Vec3& v) { return v.x() == 0.0 && v.y() == 0.0; }
 
 void check_axisymmetric(const Document& doc, const Body& b) {
-  if (std::holds_alternative<Box>(b.shape)) {
+  if (std::holds_alternative<geometry::Box>(b.shape)) {
     fail_at(doc, {"bodies", b.name, "shape", "type"},
             "a box is not symmetric about the z axis; axisymmetric geometry takes spheres and "
             "cylinders");
   }
-  if (const auto* s = std::get_if<Sphere>(&b.shape); s && !on_z_axis(s->center)) {
+  if (const auto* s = std::get_if<geometry::Sphere>(&b.shape); s && !on_z_axis(s->center)) {
     fail_at(doc, {"bodies", b.name, "shape", "center"},
             "must lie on the z axis (x = y = 0) in axisymmetric geometry");
   }
-  if (const auto* cyl = std::get_if<Cylinder>(&b.shape); cyl && !on_z_axis(cyl->base_center)) {
+  if (const auto* cyl = std::get_if<geometry::Cylinder>(&b.shape);
+      cyl && !on_z_axis(cyl->base_center)) {
     fail_at(doc, {"bodies", b.name, "shape", "base_center"},
             "must lie on the z axis (x = y = 0) in axisymmetric geometry");
   }

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/calibration_file.hpp"
 #include "cli/commands.hpp"
 #include "cli/path_option.hpp"
 #include "cli/thread_count.hpp"
+#include "setups/calibration_file.hpp"
 #include "studies/calibration.hpp"
 #include "studies/mpi_session.hpp"
 #include "studies/study_lock.hpp"
@@ -23,7 +23,8 @@ std::string parameter_text(const studies::ParameterAxis& axis, double value) {
   return fmt::format("{:.5g}{}", value, axis.unit == "-" ? "" : " " + axis.unit);
 }
 
-void print_results(const CalibrationFile& file, const std::vector<studies::GridResult>& results,
+void print_results(const setups::CalibrationFile& file,
+                   const std::vector<studies::GridResult>& results,
                    const std::filesystem::path& out_dir) {
   const studies::CalibrationPlan& plan = file.plan;
   for (const studies::GridResult& g : results) {
@@ -62,7 +63,7 @@ void print_results(const CalibrationFile& file, const std::vector<studies::GridR
       out_dir.string(), out_dir.string());
 }
 
-void print_activation(const CalibrationFile& file,
+void print_activation(const setups::CalibrationFile& file,
                       const std::vector<studies::ActivationGridResult>& results,
                       const std::filesystem::path& out_dir) {
   for (const studies::ActivationGridResult& g : results) {
@@ -90,24 +91,30 @@ void print_activation(const CalibrationFile& file,
 }
 
 // Runs this rank's share of the study, then rank 0 analyses it.
-void calibrate_file(const CalibrationFile& file, const studies::CalibrationRunOptions& o,
+void calibrate_file(const setups::CalibrationFile& file, const studies::CalibrationRunOptions& o,
                     const studies::MpiSession& mpi) {
-  const studies::CalibrationCounts n =
-      file.activation
-          ? studies::run_activation_calibration(
-                activation_plan(file),
-                [&](const studies::ActivationRun& run) { return activation_case(file, run); }, o)
-          : studies::run_calibration(
-                file.plan,
-                [&](const studies::CalibrationRun& run) { return calibration_case(file, run); }, o);
+  const studies::CalibrationCounts n = file.activation
+                                           ? studies::run_activation_calibration(
+                                                 setups::activation_plan(file),
+                                                 [&](const studies::ActivationRun& run) {
+                                                   return setups::activation_case(file, run);
+                                                 },
+                                                 o)
+                                           : studies::run_calibration(
+                                                 file.plan,
+                                                 [&](const studies::CalibrationRun& run) {
+                                                   return setups::calibration_case(file, run);
+                                                 },
+                                                 o);
   std::cout << fmt::format("calibrate{}: {} impacts, {} run now ({} failed), {} finished before\n",
                            mpi.size() > 1 ? fmt::format(" rank {}/{}", mpi.rank(), mpi.size()) : "",
                            n.runs, n.ran, n.failed, n.skipped);
   mpi.barrier();
   if (mpi.rank() != 0) return;
   if (file.activation)
-    print_activation(file, studies::analyse_activation(activation_plan(file), o.out_dir, file.name),
-                     o.out_dir);
+    print_activation(
+        file, studies::analyse_activation(setups::activation_plan(file), o.out_dir, file.name),
+        o.out_dir);
   else
     print_results(file, studies::analyse_calibration(file.plan, o.out_dir, file.name), o.out_dir);
 }
@@ -135,7 +142,7 @@ void add_calibrate(CLI::App& app) {
       ->check(machine_threads());
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt] {
-    const CalibrationFile file = read_calibration_file(opt->file);
+    const setups::CalibrationFile file = setups::read_calibration_file(opt->file);
     const studies::MpiSession mpi;
     studies::CalibrationRunOptions o;
     o.out_dir = opt->out_dir.empty() ? "out/" + file.name : opt->out_dir;

@@ -7,8 +7,8 @@
 #include <ostream>
 #include <utility>
 
-#include "case/shape_bounds.hpp"
 #include "case/size_estimate.hpp"
+#include "geometry/shape.hpp"
 
 namespace coldspray::cli {
 
@@ -25,7 +25,7 @@ struct LengthUnit {
 LengthUnit unit_of_scale(const case_file::Case& c) {
   double largest = 0.0;
   for (const auto& b : c.bodies) {
-    const case_file::Bounds box = case_file::bounding_box(b.shape);
+    const geometry::Bounds box = geometry::bounding_box(b.shape);
     largest = std::max(largest, (box.max - box.min).maxCoeff());
   }
   static constexpr std::array<LengthUnit, 4> kUnits{
@@ -35,15 +35,15 @@ LengthUnit unit_of_scale(const case_file::Case& c) {
   return kUnits.back();
 }
 
-std::string describe(const case_file::Shape& shape, const LengthUnit& u) {
+std::string describe(const geometry::Shape& shape, const LengthUnit& u) {
   auto length = [&u](double metres) {
     return fmt::format("{:.4g} {}", metres / u.metres, u.symbol);
   };
-  if (const auto* s = std::get_if<case_file::Sphere>(&shape))
+  if (const auto* s = std::get_if<geometry::Sphere>(&shape))
     return fmt::format("sphere r = {}", length(s->radius));
-  if (const auto* c = std::get_if<case_file::Cylinder>(&shape))
+  if (const auto* c = std::get_if<geometry::Cylinder>(&shape))
     return fmt::format("cylinder r = {}, h = {}", length(c->radius), length(c->height));
-  const auto& b = std::get<case_file::Box>(shape);
+  const auto& b = std::get<geometry::Box>(shape);
   const Eigen::Vector3d size = (b.max - b.min) / u.metres;
   return fmt::format("box {:.4g} x {:.4g} x {:.4g} {}", size.x(), size.y(), size.z(), u.symbol);
 }

@@ -1,6 +1,6 @@
 // `coldspray deposit DEPOSIT.yaml`: many particles sprayed onto a substrate in one 3D run
 // (docs/deposit.md). Places the particles (studies/deposit_placement.hpp), builds the case
-// (cli/deposit_case.hpp), runs it, then reports each particle's verdict and measures and the
+// (setups/deposit_case.hpp), runs it, then reports each particle's verdict and measures and the
 // deposit's: deposition efficiency, porosity, thickness (run/deposit_measures.hpp), into
 // RUN/deposit.json and on the terminal.
 #include <fmt/format.h>
@@ -14,18 +14,19 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
-#include "cli/deposit_case.hpp"
-#include "cli/deposit_file.hpp"
-#include "cli/deposit_limits.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
+#include "geometry/shape.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "run/checkpoints.hpp"
 #include "run/deposit_measures.hpp"
 #include "run/interrupt.hpp"
+#include "setups/deposit_case.hpp"
+#include "setups/deposit_file.hpp"
+#include "setups/deposit_limits.hpp"
 
 namespace coldspray::cli {
 
@@ -41,11 +42,11 @@ struct Options {
 void check_same_particles(const case_file::Case& c, const studies::Placement& placement,
                           const std::string& file) {
   const std::vector<std::string> names =
-      particle_names(static_cast<int>(placement.particles.size()));
+      setups::particle_names(static_cast<int>(placement.particles.size()));
   bool same = c.bodies.size() == names.size() + 1;
   for (std::size_t i = 0; same && i < names.size(); ++i) {
     const studies::PlacedParticle& p = placement.particles[i];
-    const auto* sphere = std::get_if<case_file::Sphere>(&c.bodies[i].shape);
+    const auto* sphere = std::get_if<geometry::Sphere>(&c.bodies[i].shape);
     // The case file holds 12 significant digits of each length and speed.
     const double tolerance = 1e-9 * p.diameter;
     same = c.bodies[i].name == names[i] && sphere &&
@@ -61,20 +62,6 @@ void check_same_particles(const case_file::Case& c, const studies::Placement& pl
                                  file));
 }
 
-// The placement, or InputError at the file's patch when a particle found no place.
-studies::Placement place(const DepositFile& file) {
-  studies::Placement placement = studies::place_particles(file.plan);
-  if (placement.unplaced >= 0) {
-    const std::size_t k = static_cast<std::size_t>(placement.unplaced);
-    throw InputError(
-        file.patch_where, "patch",
-        fmt::format("particle {} of {} found no place {} um clear of the particles placed before "
-                    "it in {} draws: widen the patch or the arrival_window, or spray fewer",
-                    k + 1, file.plan.count, file.plan.clearance * 1e6, studies::kPlacementTries));
-  }
-  return placement;
-}
-
 struct ParticleRow {
   std::string name;
   const studies::PlacedParticle* placed = nullptr;
@@ -87,7 +74,7 @@ struct ParticleRow {
 std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
                                        const run::Summary& summary) {
   const std::vector<std::string> names =
-      particle_names(static_cast<int>(placement.particles.size()));
+      setups::particle_names(static_cast<int>(placement.particles.size()));
   const std::size_t substrate = summary.bodies.size() - 1;
   std::vector<ParticleRow> rows;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -105,7 +92,7 @@ std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
   return rows;
 }
 
-void write_deposit_json(const std::filesystem::path& path, const DepositFile& file,
+void write_deposit_json(const std::filesystem::path& path, const setups::DepositFile& file,
                         const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit) {
   const metrics::DepositShape& shape = deposit.shape;
   nlohmann::ordered_json j;
@@ -173,7 +160,7 @@ void print_deposit(const std::vector<ParticleRow>& rows, const run::DepositMeasu
 // The deposit's measures from the run's last checkpoint. Measuring seeds the case again, and a
 // signal then stops it as it stops a run's set-up, but the run's results are written by then:
 // the message says so, and how to report them.
-run::DepositMeasures measure_deposit(const DepositFile& file, const case_file::Case& c,
+run::DepositMeasures measure_deposit(const setups::DepositFile& file, const case_file::Case& c,
                                      const std::filesystem::path& out_dir,
                                      const std::vector<double>& masses,
                                      const std::vector<bool>& bonded) {
@@ -192,7 +179,7 @@ run::DepositMeasures measure_deposit(const DepositFile& file, const case_file::C
 
 // The particles' rows and the deposit's measures from the finished run: deposit.json, the
 // terminal's table, where the picture and the results are.
-void report_deposit(const DepositFile& file, const studies::Placement& placement,
+void report_deposit(const setups::DepositFile& file, const studies::Placement& placement,
                     const case_file::Case& c, const Report& report) {
   const std::vector<ParticleRow> rows = particle_rows(placement, report.summary);
   std::vector<double> masses;
@@ -238,11 +225,11 @@ void add_deposit(CLI::App& app) {
       ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt] {
-    const DepositFile file = read_deposit_file(opt->path);
+    const setups::DepositFile file = setups::read_deposit_file(opt->path);
     if (!opt->write_case.empty()) io::require_writable(opt->write_case, "--write-case");
     const std::vector<case_file::Override> sets = parse_overrides(opt->run.sets);
-    check_deposit_size(file, sets);
-    const studies::Placement placement = place(file);
+    setups::check_deposit_size(file, sets);
+    const studies::Placement placement = setups::deposit_placement(file);
     if (!opt->restart.empty()) {
       const case_file::Case c = restart_case(opt->restart, opt->run);
       opt->run.restart_command = deposit_restart_command(opt->path, opt->run.out_dir);
@@ -250,7 +237,7 @@ void add_deposit(CLI::App& app) {
       report_deposit(file, placement, c, run_and_report(c, opt->run, std::cout));
       return;
     }
-    const GeneratedCase g = deposit_case(file, placement);
+    const setups::GeneratedCase g = setups::deposit_case(file, placement);
     const case_file::Case c =
         case_file::load_case_text(opt->path + " (its generated case)", g.yaml, g.origins, sets);
     // Reading the case does not read the stop flag (under a second for 1000 particles, 0.9 s

@@ -1,5 +1,5 @@
 // `coldspray impact`: one particle on a substrate from a few options. Builds the thesis'
-// particle-on-cylinder case (cli/impact_case.hpp), validates it like a case file, runs it and
+// particle-on-cylinder case (setups/impact_case.hpp), validates it like a case file, runs it and
 // prints the verdict on the particle's last window of motion (docs/bonding.md); or writes the case
 // out to be edited.
 #include <fmt/format.h>
@@ -15,12 +15,12 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
-#include "cli/impact_case.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "setups/impact_case.hpp"
 
 namespace coldspray::cli {
 
@@ -35,7 +35,7 @@ struct Options {
   RunFlags run;
 };
 
-ImpactSpec make_spec(const Options& o, const CLI::App& sub) {
+setups::ImpactSpec make_spec(const Options& o, const CLI::App& sub) {
   return impact_spec(
       o.impact, parse_diameter("--diameter", o.diameter), parse_speed("--velocity", o.velocity),
       command_line(kSource, sub, {"--write-case", "--out", "--overwrite", "--threads", "--quiet"}));
@@ -43,7 +43,7 @@ ImpactSpec make_spec(const Options& o, const CLI::App& sub) {
 
 // The case file to write: the generated text, or with --set its tree after the overrides
 // (which loses the comments but the header's).
-std::string case_file_text(const GeneratedCase& g,
+std::string case_file_text(const setups::GeneratedCase& g,
                            const std::vector<case_file::Override>& overrides) {
   if (overrides.empty()) return g.yaml;
   std::string header;
@@ -123,8 +123,8 @@ void add_impact(CLI::App& app) {
       ->check(given_path());
   add_run_flags(*sub, opt->run);
   sub->callback([opt, sub] {
-    const ImpactSpec spec = make_spec(*opt, *sub);
-    const GeneratedCase g = impact_case(spec);
+    const setups::ImpactSpec spec = make_spec(*opt, *sub);
+    const setups::GeneratedCase g = setups::impact_case(spec);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->run.sets);
     const case_file::Case c = case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
     // After the case is read: a refused command's output is its error, not a warning about the

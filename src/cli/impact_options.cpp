@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <optional>
+#include <utility>
 
 #include "cli/quantity_option.hpp"
 #include "core/error.hpp"
@@ -103,49 +103,6 @@ std::string calibration_warning(const ImpactCaseOptions& o) {
       kCalibrated, o.material, substrate);
 }
 
-std::pair<double, double> parse_grid(const std::string& text) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '/') continue;
-    const std::size_t next = text.find_first_not_of(' ', i + 1);
-    if (next == std::string::npos ||
-        !(std::isdigit(static_cast<unsigned char>(text[next])) || text[next] == '.'))
-      continue;
-    const double cell = parse_with_unit(text.substr(0, i), units::kLength);
-    const double spacing = parse_with_unit(text.substr(i + 1), units::kLength);
-    // A deposit file's grid: 0um/0um passed its reader and was refused only in the generated
-    // case, at a key of it ('bodies.p1.spacing') and at the file's particles, not its grid.
-    if (!(cell > 0.0) || !(spacing > 0.0))
-      throw UnitError("the cell and the spacing must be > 0, got '" + text + "'");
-    return {cell, spacing};
-  }
-  throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
-}
-
-GridChoice parse_grid_choice(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(' ');
-  if (first == std::string::npos || (text[first] != 'D' && text[first] != 'd')) {
-    const auto [cell, spacing] = parse_grid(text);
-    return {0.0, cell, spacing};
-  }
-  const std::size_t slash = text.find_first_not_of(' ', first + 1);
-  if (slash == std::string::npos || text[slash] != '/')
-    throw UnitError("expected D/N (N cells across the particle's diameter), got '" + text + "'");
-  const double cells = units::parse_as(text.substr(slash + 1), units::kDimensionless);
-  if (!(cells >= 2.0) ||
-      units::parse_quantity(text.substr(slash + 1)).dimension != units::kDimensionless)
-    throw UnitError("D/N needs a number of cells N >= 2, got '" + text + "'");
-  return {cells};
-}
-
-void check_cell_fits(double cell_size, double diameter, const std::string& where,
-                     const std::string& key) {
-  if (cell_size > 0.0 && diameter < 2.0 * cell_size)
-    throw InputError(where, key,
-                     fmt::format("the cell ({:.4g} um) must be at most half the particle "
-                                 "diameter ({:.4g} um)",
-                                 cell_size * 1e6, diameter * 1e6));
-}
-
 double parse_diameter(const std::string& option, const std::string& text) {
   return positive(option, text, units::kLength, "must be");
 }
@@ -157,7 +114,7 @@ double parse_speed(const std::string& option, const std::string& text) {
 namespace {
 
 // The PD paper's set-up (docs/impact.md): cu-jc, 3D, no bonding model, the spacing D / 50.
-void peridynamics_spec(const ImpactCaseOptions& o, ImpactSpec& spec) {
+void peridynamics_spec(const ImpactCaseOptions& o, setups::ImpactSpec& spec) {
   spec.solver = case_file::Method::Peridynamics;
   if (spec.material.empty()) spec.material = "cu-jc";
   if (o.geometry == "axisymmetric")
@@ -175,7 +132,7 @@ void peridynamics_spec(const ImpactCaseOptions& o, ImpactSpec& spec) {
     if (!(*spec.beta > 0.0 && *spec.beta < 1.0))
       throw InputError("--beta", "", fmt::format("must be in (0, 1), got '{}'", o.beta));
   }
-  spec.spacing = o.spacing.empty() ? spec.diameter / kPeridynamicsPointsAcross
+  spec.spacing = o.spacing.empty() ? spec.diameter / setups::kPeridynamicsPointsAcross
                                    : positive("--spacing", o.spacing, units::kLength, "must be");
   if (spec.spacing > spec.diameter / 4.0)
     throw InputError(
@@ -188,14 +145,14 @@ void peridynamics_spec(const ImpactCaseOptions& o, ImpactSpec& spec) {
 
 }  // namespace
 
-ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
-                       const std::string& command) {
-  ImpactSpec spec;
+setups::ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
+                               const std::string& command) {
+  setups::ImpactSpec spec;
   spec.material = o.material;
   spec.substrate_material = o.substrate_material;
   spec.diameter = diameter;
   spec.speed = speed;
-  spec.symmetry = o.symmetry == "none" ? Symmetry::None : Symmetry::Quarter;
+  spec.symmetry = o.symmetry == "none" ? setups::Symmetry::None : setups::Symmetry::Quarter;
   if (o.solver == "peridynamics") {
     if (o.coarsening)
       throw InputError("--coarsening", "",
@@ -214,28 +171,28 @@ ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed
     if (!o.spacing.empty())
       throw InputError("--spacing", "",
                        "is peridynamics' option: the MPM takes --grid CELL/SPACING");
-    spec.setup = o.setup == "thesis" ? SetUp::Thesis : SetUp::Similar;
+    spec.setup = o.setup == "thesis" ? setups::SetUp::Thesis : setups::SetUp::Similar;
     if (!o.grid.empty() && !o.resolution.empty())
       throw InputError("--resolution", "",
                        "give --resolution D/N or --grid CELL/SPACING, not both");
     const char* option = o.grid.empty() ? "--resolution" : "--grid";
-    std::optional<GridChoice> grid;
+    std::optional<setups::GridChoice> grid;
     try {
       if (!o.resolution.empty()) {
-        grid = parse_grid_choice(o.resolution);
+        grid = setups::parse_grid_choice(o.resolution);
         if (grid->cells_per_diameter == 0.0)
           throw UnitError("expected D/N, e.g. D/40 (an absolute grid is --grid), got '" +
                           o.resolution + "'");
       } else if (!o.grid.empty()) {
-        grid = parse_grid_choice(o.grid);
+        grid = setups::parse_grid_choice(o.grid);
       }
     } catch (const UnitError& e) {
       throw InputError(option, "", e.what());
     }
     spec.geometry =
         o.geometry == "3d" ? case_file::Geometry::ThreeD : case_file::Geometry::Axisymmetric;
-    size_impact(spec, grid, optional_quantity("--end-time", o.end_time, units::kTime));
-    check_cell_fits(spec.cell_size, spec.diameter, option);
+    setups::size_impact(spec, grid, optional_quantity("--end-time", o.end_time, units::kTime));
+    setups::check_cell_fits(spec.cell_size, spec.diameter, option);
     if (o.contact != "repulsive" || !o.beta.empty())
       throw InputError(
           o.beta.empty() ? "--contact" : "--beta", "",

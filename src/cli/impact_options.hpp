@@ -1,6 +1,6 @@
 // The options that shape the thesis' particle-on-cylinder case, shared by `coldspray impact`
 // (one diameter and speed) and `coldspray vcrit` (many of each): registration on a subcommand
-// and their translation into an ImpactSpec (cli/impact_case.hpp).
+// and their translation into an ImpactSpec (setups/impact_case.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,9 +8,8 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <utility>
 
-#include "cli/impact_case.hpp"
+#include "setups/impact_case.hpp"
 
 namespace coldspray::cli {
 
@@ -38,27 +37,14 @@ struct ImpactCaseOptions {
 void add_impact_case_options(CLI::App& sub, ImpactCaseOptions& o,
                              const std::function<void()>& particle_options);
 
-// "CELL/SPACING" (e.g. 0.7um/0.175um) in metres: split at the '/' that a number follows, since
-// units hold '/' too (m/s). Throws UnitError, also for a cell or spacing <= 0.
-std::pair<double, double> parse_grid(const std::string& text);
-
-// "D/N", N > 0 cells across the particle's diameter (the size-similar set-up's resolution), or
-// "CELL/SPACING" as parse_grid. Throws UnitError.
-GridChoice parse_grid_choice(const std::string& text);
-
-// A particle narrower than two cells has next to no points and no shape to deform: InputError
-// at `where` (an option or a file location) and `key`, rather than the seeding's "no points".
-void check_cell_fits(double cell_size, double diameter, const std::string& where,
-                     const std::string& key = "");
-
 // A diameter or an impact speed given to `option`: a quantity > 0, else InputError.
 double parse_diameter(const std::string& option, const std::string& text);
 double parse_speed(const std::string& option, const std::string& text);
 
 // The spec of one impact from the options, a diameter and a speed (SI); InputError names the
 // option at fault. `command` is echoed in a written case's header.
-ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
-                       const std::string& command);
+setups::ImpactSpec impact_spec(const ImpactCaseOptions& o, double diameter, double speed,
+                               const std::string& command);
 
 // The energy model's defaults are the project's calibration for al-ptw on al-ptw
 // (docs/validation/critical-velocity.md): for any other pair, unless --Gc and --Gc-rate are

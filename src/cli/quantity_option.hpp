@@ -10,11 +10,8 @@
 
 namespace coldspray::cli {
 
-// Parses `text` as a quantity of `expected` dimension; UnitError if malformed, of another
-// dimension, or a bare number where a length, velocity or time is expected.
-double parse_with_unit(const std::string& text, const units::Dimension& expected);
-
-// The same; InputError names `option` on failure.
+// `text` as a quantity of `expected` dimension (units::parse_with_unit: no bare number for a
+// length, a velocity or a time); InputError names `option` if malformed or of another dimension.
 double parse_option_quantity(const std::string& option, const std::string& text,
                              const units::Dimension& expected);
 

@@ -110,7 +110,8 @@ void add_vcrit(CLI::App& app) {
                      {"--diameters", "--vmin", "--vmax", "--tol", "--max-runs", "--set", "--out",
                       "--jobs", "--threads-per-job", "--quiet"});
     const studies::ImpactCaseMaker make_case = [&](double diameter, double speed) {
-      const GeneratedCase g = impact_case(impact_spec(opt->impact, diameter, speed, command));
+      const setups::GeneratedCase g =
+          setups::impact_case(impact_spec(opt->impact, diameter, speed, command));
       return case_file::load_case_text(kSource, g.yaml, g.origins, overrides);
     };
 

@@ -391,4 +391,25 @@ std::string dimension_name(const Dimension& d) {
   return si_unit(d);
 }
 
+namespace {
+
+// The dimensions whose bare numbers are refused, with the unit a message suggests.
+struct NeedsUnit {
+  Dimension dimension;
+  const char* example;
+};
+constexpr std::array<NeedsUnit, 3> kNeedUnits{{{kLength, "um"}, {kVelocity, "m/s"}, {kTime, "ns"}}};
+
+}  // namespace
+
+double parse_with_unit(const std::string& text, const Dimension& expected) {
+  const double value = parse_as(text, expected);
+  if (parse_quantity(text).dimension == expected) return value;
+  for (const NeedsUnit& n : kNeedUnits)
+    if (n.dimension == expected)
+      throw UnitError("'" + text + "' has no unit: give the " + dimension_name(expected) +
+                      " with its unit, e.g. '" + text + n.example + "'");
+  return value;
+}
+
 }  // namespace coldspray::units

@@ -57,6 +57,11 @@ Quantity parse_quantity(std::string_view text);
 // dimension. Throws UnitError naming both dimensions on a mismatch.
 double parse_as(std::string_view text, const Dimension& expected);
 
+// As parse_as, but a bare number where a length, a velocity or a time is expected is a UnitError
+// that suggests a unit: where a user types a quantity (the command line, a grid's CELL/SPACING)
+// rather than a case file's value, `20` for a diameter would be 20 m where 20 um was meant.
+double parse_with_unit(const std::string& text, const Dimension& expected);
+
 // Human-readable SI unit for a dimension, e.g. "Pa", "m/s", "kg/m^3", "J/m^2/s", "1/s", "-".
 std::string si_unit(const Dimension& d);
 

@@ -37,8 +37,7 @@ Vec3 lattice_origin(const Lattice& lattice) {
 
 }  // namespace
 
-void SeededPoints::add_site(const case_file::Shape& shape, const Vec3& x, double s,
-                            bool axisymmetric) {
+void SeededPoints::add_site(const Shape& shape, const Vec3& x, double s, bool axisymmetric) {
   // Neighbours along y do not exist in r-z; a neighbour across the axis (r < 0) mirrors to the
   // inside of an axisymmetric shape, so the axis is never flagged as a surface.
   const int axes = axisymmetric ? 2 : 3;
@@ -64,7 +63,7 @@ void SeededPoints::add_block(const Vec3& x, double b, bool axisymmetric) {
   outside.push_back(0);
 }
 
-SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice) {
+SeededPoints seed(const Shape& shape, const Lattice& lattice) {
   const double s = lattice.spacing;
   const Bounds box = bounding_box(shape);
   std::array<std::array<long, 2>, 3> range;
@@ -91,7 +90,7 @@ namespace {
 // The cubes of the coarsened lattice, split down to single sites where they must be.
 class Coarsener {
  public:
-  Coarsener(const case_file::Shape& shape, const Lattice& lattice, const case_file::Shape& fine)
+  Coarsener(const Shape& shape, const Lattice& lattice, const Shape& fine)
       : shape_(shape), fine_(fine), s_(lattice.spacing), axisymmetric_(lattice.axisymmetric) {}
 
   // The cube of edge b whose lowest corner is lo: one point if it may be, else its 8 (4 in r-z)
@@ -136,16 +135,16 @@ class Coarsener {
     return true;
   }
 
-  const case_file::Shape& shape_;
-  const case_file::Shape& fine_;
+  const Shape& shape_;
+  const Shape& fine_;
   double s_;
   bool axisymmetric_;
 };
 
 }  // namespace
 
-SeededPoints seed_coarsened(const case_file::Shape& shape, const Lattice& lattice, int levels,
-                            const case_file::Shape& fine) {
+SeededPoints seed_coarsened(const Shape& shape, const Lattice& lattice, int levels,
+                            const Shape& fine) {
   const double s = lattice.spacing, b = std::ldexp(s, levels);
   const Bounds box = bounding_box(shape);
   // The cubes of edge b = 2^levels s tile the lattice from its origin: cube n spans the sites

@@ -35,7 +35,7 @@ struct SeededPoints {
   std::vector<std::uint8_t> outside;  // OutsideNeighbour bits; non-zero on the surface
 
   // Adds the lattice site x of spacing s (SeededPoints::outside from its face neighbours).
-  void add_site(const case_file::Shape& shape, const Vec3& x, double s, bool axisymmetric);
+  void add_site(const Shape& shape, const Vec3& x, double s, bool axisymmetric);
   // Adds a point standing for the whole cube (square in r-z) of edge b centred at x, inside
   // the shape and off its surface.
   void add_block(const Vec3& x, double b, bool axisymmetric);
@@ -46,13 +46,13 @@ struct SeededPoints {
 // inside the shape: the points bonding acts on (thesis §4.1.1, the set S). Which neighbours are
 // outside tells the face (bottom: -z, top: +z, side: the others) for fixed and absorbing faces.
 // Interrupted at SIGINT or SIGTERM (core/interrupt.hpp), read once a row of sites.
-SeededPoints seed(const case_file::Shape& shape, const Lattice& lattice);
+SeededPoints seed(const Shape& shape, const Lattice& lattice);
 
 // Seeds the same lattice, but where a cube of 2^l x 2^l (x 2^l) sites, l <= levels, lies inside
 // the shape, off its surface by a spacing, and farther than its own edge from the region
 // `fine`, one point stands for the cube (docs/mpm.md, "Coarsened seeding"). The points' volumes
 // add up to those of seed()'s, and the surface points are seed()'s.
-SeededPoints seed_coarsened(const case_file::Shape& shape, const Lattice& lattice, int levels,
-                            const case_file::Shape& fine);
+SeededPoints seed_coarsened(const Shape& shape, const Lattice& lattice, int levels,
+                            const Shape& fine);
 
 }  // namespace coldspray::geometry

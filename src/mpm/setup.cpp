@@ -12,7 +12,7 @@
 #include "bodies/grip.hpp"
 #include "bodies/seed_bodies.hpp"
 #include "case/grid_domain.hpp"
-#include "case/key_locations.hpp"
+#include "case/located_error.hpp"
 #include "core/error.hpp"
 #include "geometry/seeding.hpp"
 #include "mpm/contact.hpp"

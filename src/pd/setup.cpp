@@ -10,7 +10,7 @@
 
 #include "bodies/grip.hpp"
 #include "bodies/seed_bodies.hpp"
-#include "case/key_locations.hpp"
+#include "case/located_error.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "pd/bulk_fracture.hpp"

@@ -2,7 +2,7 @@
 // "Activation"; docs/studies.md, "Calibrating the activation"). Each size impacts at its
 // experimental critical velocity v_c times (1 - step) and (1 + step), with the critical
 // penetration 0 (no bonds yet, the contact unbonded, as before any activation), until the
-// particle has left the contact (cli/impact_case.hpp, kContactTimes d / v); between the two runs
+// particle has left the contact (setups/impact_case.hpp, kContactTimes d / v); between the two runs
 // its largest penetration follows a power law,
 // p(v) = p_c (v / v_c)^b. A critical penetration delta predicts vcrit = v_c (delta / p_c)^(1/b)
 // for each size; the calibration is the delta whose worst size errs least in log v (the sizes'

@@ -20,10 +20,10 @@ TEST(Fast3dExample, IsTheThesisImpactWithTheDocumentedFineRegions) {
   ASSERT_EQ(c.bodies.size(), 2u);
   const Body& particle = c.bodies[0];
   const Body& substrate = c.bodies[1];
-  EXPECT_NEAR(std::get<Sphere>(particle.shape).radius, 7e-6, 1e-12);
+  EXPECT_NEAR(std::get<geometry::Sphere>(particle.shape).radius, 7e-6, 1e-12);
   EXPECT_NEAR(particle.velocity.z(), -810.0, 1e-9);
-  EXPECT_NEAR(std::get<Cylinder>(substrate.shape).radius, 15e-6, 1e-12);
-  EXPECT_NEAR(std::get<Cylinder>(substrate.shape).height, 10e-6, 1e-12);
+  EXPECT_NEAR(std::get<geometry::Cylinder>(substrate.shape).radius, 15e-6, 1e-12);
+  EXPECT_NEAR(std::get<geometry::Cylinder>(substrate.shape).height, 10e-6, 1e-12);
   EXPECT_EQ(c.solver.geometry, Geometry::ThreeD);
   EXPECT_NEAR(c.grid->cell_size, 0.7e-6, 1e-15);
   EXPECT_NEAR(particle.spacing, 0.175e-6, 1e-15);
@@ -34,14 +34,14 @@ TEST(Fast3dExample, IsTheThesisImpactWithTheDocumentedFineRegions) {
 
   ASSERT_TRUE(substrate.coarsening);
   EXPECT_EQ(substrate.coarsening->levels, 2);
-  const auto& box = std::get<Box>(substrate.coarsening->fine);
+  const auto& box = std::get<geometry::Box>(substrate.coarsening->fine);
   EXPECT_NEAR(box.max.x(), 7e-6, 1e-12);
   EXPECT_NEAR(box.min.z(), -3.5e-6, 1e-12);
   EXPECT_GT(std::hypot(box.max.x(), box.max.y()), 8.4e-6);  // the corner past the contact's rim
 
   ASSERT_TRUE(particle.coarsening);
   EXPECT_EQ(particle.coarsening->levels, 2);
-  const auto& fine = std::get<Cylinder>(particle.coarsening->fine);
+  const auto& fine = std::get<geometry::Cylinder>(particle.coarsening->fine);
   EXPECT_NEAR(fine.base_center.z() + fine.height, 5e-6, 1e-12);  // fine below z = 5 um
   EXPECT_GE(fine.radius, 7e-6);                                  // the particle's whole width
 }

@@ -50,7 +50,7 @@ TEST(LoadCase, ReadsEveryKeyInSi) {
   const Body& particle = c.bodies[0];
   EXPECT_EQ(particle.name, "particle");
   EXPECT_EQ(particle.material, "soft-al");
-  const auto& sphere = std::get<Sphere>(particle.shape);
+  const auto& sphere = std::get<geometry::Sphere>(particle.shape);
   EXPECT_EQ(sphere.center, Vec3(0, 0, 7e-6));
   EXPECT_EQ(sphere.radius, 7e-6);
   EXPECT_EQ(particle.spacing, 0.175e-6);
@@ -58,14 +58,14 @@ TEST(LoadCase, ReadsEveryKeyInSi) {
   EXPECT_EQ(particle.temperature, 350.0);
 
   const Body& substrate = c.bodies[1];
-  const auto& cylinder = std::get<Cylinder>(substrate.shape);
+  const auto& cylinder = std::get<geometry::Cylinder>(substrate.shape);
   EXPECT_EQ(cylinder.base_center, Vec3(0, 0, -10e-6));
   EXPECT_EQ(cylinder.radius, 15e-6);
   EXPECT_EQ(cylinder.height, 10e-6);
   EXPECT_EQ(substrate.absorbing, (std::vector<BodyFace>{BodyFace::Bottom, BodyFace::Side}));
   EXPECT_EQ(substrate.fixed, std::vector<BodyFace>{BodyFace::Bottom});
 
-  const auto& box = std::get<Box>(c.bodies[2].shape);
+  const auto& box = std::get<geometry::Box>(c.bodies[2].shape);
   EXPECT_EQ(box.min, Vec3(-20e-6, -20e-6, -30e-6));
   EXPECT_EQ(box.max, Vec3(20e-6, 20e-6, -20e-6));
   EXPECT_EQ(c.bodies[3].velocity, Vec3(1, -2, 3));  // mixed units and a bare SI number

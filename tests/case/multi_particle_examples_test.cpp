@@ -22,8 +22,8 @@ TEST(MultiParticleExamples, TwoParticlesAtTheThesisOffsets) {
     const Case c = load_case(std::string(COLDSPRAY_SOURCE_DIR) +
                              "/examples/multi-particle/two-particles-" + name + "um.yaml");
     ASSERT_EQ(c.bodies.size(), 3u);
-    const auto& bottom = std::get<Sphere>(c.bodies[0].shape);
-    const auto& top = std::get<Sphere>(c.bodies[1].shape);
+    const auto& bottom = std::get<geometry::Sphere>(c.bodies[0].shape);
+    const auto& top = std::get<geometry::Sphere>(c.bodies[1].shape);
     EXPECT_NEAR(bottom.radius, 7e-6, 1e-12);
     EXPECT_NEAR(top.radius, 7e-6, 1e-12);
     EXPECT_NEAR(bottom.center.z(), 7e-6, 1e-12);  // touching the substrate's top, z = 0
@@ -38,7 +38,7 @@ TEST(MultiParticleExamples, TwoParticlesAtTheThesisOffsets) {
     EXPECT_EQ(c.grid->faces.at(GridFace::XMin),
               offset_um == 0.0 ? FaceCondition::Roller : FaceCondition::Free);
     ASSERT_TRUE(c.bodies[2].coarsening);
-    const auto& fine = std::get<Cylinder>(c.bodies[2].coarsening->fine);
+    const auto& fine = std::get<geometry::Cylinder>(c.bodies[2].coarsening->fine);
     // The fine region takes in both impacts' 9.1 um.
     EXPECT_LE(fine.base_center.x() - fine.radius, -9.1e-6 + 1e-12);
     EXPECT_GE(fine.base_center.x() + fine.radius, offset_um * 1e-6 + 9.1e-6 - 1e-12);

@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "case/load.hpp"
-#include "cli/impact_case.hpp"
 #include "read_text.hpp"
 #include "run_command.hpp"
 #include "temp_dir.hpp"
@@ -41,36 +40,6 @@ case_file::Case written_case(const std::string& args) {
   return case_file::load_case((fs::path(dir) / "case.yaml").string());
 }
 
-TEST(ImpactSubstrate, ReproducesThesisTable53) {
-  const double table[][2] = {{14, 30}, {18, 36}, {22, 44}, {26, 46}, {30, 50}};
-  for (const auto& row : table) {
-    const cli::SubstrateSize s = cli::substrate_size(row[0] * 1e-6, cli::SetUp::Thesis);
-    EXPECT_DOUBLE_EQ(s.diameter, row[1] * 1e-6) << row[0];
-    EXPECT_DOUBLE_EQ(s.height, 10e-6) << row[0];
-    // Diameters a unit conversion leaves a hair off the table's (3e-5 / 1e-6 = 30.000000000000004)
-    // are still the table's.
-    EXPECT_DOUBLE_EQ(
-        cli::substrate_size(std::nextafter(row[0] * 1e-6, 1.0), cli::SetUp::Thesis).diameter,
-        row[1] * 1e-6);
-  }
-}
-
-TEST(ImpactSubstrate, InterpolatesInsideTheTableAndScalesOutside) {
-  EXPECT_DOUBLE_EQ(cli::substrate_size(20e-6, cli::SetUp::Thesis).diameter,
-                   40e-6);  // between 36 and 44
-  EXPECT_DOUBLE_EQ(cli::substrate_size(28e-6, cli::SetUp::Thesis).diameter,
-                   48e-6);  // between 46 and 50
-  // Below 14 um the 14 um case scaled: 7 um -> 15 um; 4 um -> 8.57 -> 8.6 um (0.1 um up).
-  EXPECT_DOUBLE_EQ(cli::substrate_size(7e-6, cli::SetUp::Thesis).diameter, 15e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6, cli::SetUp::Thesis).diameter, 8.6e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(4e-6, cli::SetUp::Thesis).height, 10e-6);
-  // Above 30 um: 2 d across, max(10 um, d/3) high.
-  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6, cli::SetUp::Thesis).diameter, 90e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(45e-6, cli::SetUp::Thesis).height, 15e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6, cli::SetUp::Thesis).diameter, 76e-6);
-  EXPECT_DOUBLE_EQ(cli::substrate_size(38e-6, cli::SetUp::Thesis).height, 12.7e-6);
-}
-
 // The default set-up is in proportion to the diameter (docs/impact.md, "The set-up"): 22 um at
 // 790 m/s on a 66 x 33 um cylinder, cells 22 / 40 um, the thesis' 14 um times x 22 / 14 and the
 // end a window after 2 d / v.
@@ -85,12 +54,12 @@ TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
   const case_file::Case c = case_file::load_case((fs::path(dir) / "case.yaml").string());
   EXPECT_EQ(c.name, "impact-al-ptw-22um-790");
   ASSERT_EQ(c.bodies.size(), 2u);
-  const auto& particle = std::get<case_file::Sphere>(c.bodies[0].shape);
+  const auto& particle = std::get<geometry::Sphere>(c.bodies[0].shape);
   EXPECT_DOUBLE_EQ(particle.radius, 11e-6);
   EXPECT_DOUBLE_EQ(particle.center.z(), 11e-6);  // touching the substrate's top z = 0
   EXPECT_DOUBLE_EQ(c.bodies[0].velocity.z(), -790.0);
   EXPECT_DOUBLE_EQ(c.bodies[0].temperature, 298.0);
-  const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
+  const auto& substrate = std::get<geometry::Cylinder>(c.bodies[1].shape);
   EXPECT_DOUBLE_EQ(substrate.radius, 44e-6);  // 4 d across
   EXPECT_DOUBLE_EQ(substrate.height, 44e-6);  // 2 d high
   EXPECT_DOUBLE_EQ(substrate.base_center.z() + substrate.height, 0.0);
@@ -115,7 +84,7 @@ TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
 // sets the cells per diameter of the similar set-up.
 TEST(Impact, TheThesisSetUpAndTheResolution) {
   const case_file::Case c = written_case(kCase22 + " --setup thesis");
-  const auto& substrate = std::get<case_file::Cylinder>(c.bodies[1].shape);
+  const auto& substrate = std::get<geometry::Cylinder>(c.bodies[1].shape);
   EXPECT_DOUBLE_EQ(substrate.radius, 22e-6);  // Table 5.3: 44 um across for 22 um
   EXPECT_DOUBLE_EQ(substrate.height, 10e-6);
   EXPECT_DOUBLE_EQ(c.grid->cell_size, 0.7e-6);
@@ -196,7 +165,7 @@ TEST(Impact, CoarseningReachesTheSubstrate) {
   ASSERT_TRUE(c.bodies[1].coarsening);
   EXPECT_FALSE(c.bodies[0].coarsening);
   EXPECT_EQ(c.bodies[1].coarsening->levels, 1);
-  const auto& fine = std::get<case_file::Cylinder>(c.bodies[1].coarsening->fine);
+  const auto& fine = std::get<geometry::Cylinder>(c.bodies[1].coarsening->fine);
   EXPECT_NEAR(fine.radius, 0.65 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.height, 0.36 * 22e-6, 1e-12);
   EXPECT_NEAR(fine.base_center.z(), -0.36 * 22e-6, 1e-12);
@@ -230,7 +199,7 @@ TEST(Impact, PeridynamicsBuildsThePdPapersSetUp) {
   EXPECT_EQ(c.bodies.at(0).material, "cu-jc");
   EXPECT_EQ(c.bodies.at(1).material, "cu-jc");
   EXPECT_NEAR(c.bodies.at(0).spacing, 0.6e-6, 1e-15);
-  const auto& cylinder = std::get<case_file::Cylinder>(c.bodies.at(1).shape);
+  const auto& cylinder = std::get<geometry::Cylinder>(c.bodies.at(1).shape);
   EXPECT_NEAR(cylinder.radius, 60e-6, 1e-15);
   EXPECT_NEAR(cylinder.height, 60e-6, 1e-15);
   EXPECT_NEAR(cylinder.base_center.z(), -60e-6, 1e-15);
@@ -259,11 +228,11 @@ TEST(Impact, ContactModelOneLiftsTheParticleToItsCutOff) {
       "--contact lennard-jones --beta 0.004");
   EXPECT_EQ(c.contact.model, case_file::ContactModel::LennardJones);
   EXPECT_EQ(c.contact.beta, 0.004);
-  EXPECT_NEAR(std::get<case_file::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
+  EXPECT_NEAR(std::get<geometry::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
   const case_file::Case repulsive =
       written_case("impact --solver peridynamics --diameter 30um --velocity 500m/s");
   EXPECT_EQ(repulsive.contact.model, case_file::ContactModel::Repulsive);
-  EXPECT_NEAR(std::get<case_file::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
+  EXPECT_NEAR(std::get<geometry::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
 }
 
 // Model 1 on bodies seeded touching would push them apart at t = 0 with (r0/r)^13: refused.

@@ -9,7 +9,6 @@
 #include <string>
 
 #include "case/load.hpp"
-#include "cli/case_text.hpp"
 #include "core/units.hpp"
 #include "read_text.hpp"
 #include "run_command.hpp"
@@ -102,21 +101,6 @@ TEST(NumberSyntax, MalformedNumbersInACaseFileNameTheLineAndKey) {
   EXPECT_TRUE(
       has(r, "bad.yaml:6:14: key 'bodies.particle.spacing': '1.75e-1.5 um' is not a number"))
       << r.output;
-}
-
-// What the generated cases write, cli/case_text.cpp, reads back to the value given: 12
-// significant digits, the most a value typed on the command line is taken to have.
-TEST(NumberSyntax, GeneratedCaseNumbersReadBack) {
-  for (const double v : {1e12, 1e-7, 2.8e5, -1.5e-3, 123456789012.0, 1e100, 4.2e-300, 810.0}) {
-    SCOPED_TRACE(cli::number(v));
-    EXPECT_EQ(units::parse_as(cli::number(v), units::kDimensionless), v);
-    EXPECT_EQ(units::parse_as(cli::number(v) + " J/m^2", units::kEnergyPerArea), v);
-  }
-  for (const char* typed : {"0.175um", "1e+3um", "22um", "1.5e-3um", "123.456789012um"}) {
-    SCOPED_TRACE(typed);
-    const double metres = units::parse_as(typed, units::kLength);
-    EXPECT_EQ(units::parse_as(cli::um(metres), units::kLength), metres) << cli::um(metres);
-  }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// A mutation fuzzer over the deposit file's reader (cli::read_deposit_file: parse, schema, the
+// A mutation fuzzer over the deposit file's reader (setups::read_deposit_file: parse, schema, the
 // size distribution, the grid, the size-similar set-up's defaults), seeded from the example
 // deposits and those in tests/data/fuzz/deposit (its refused/ folder: reproducers, each refused).
 // Only the reading: the placement of the particles is left out. Each mutated text is written to
@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "cli/deposit_file.hpp"
 #include "core/error.hpp"
 #include "fuzz_support.hpp"
+#include "setups/deposit_file.hpp"
 #include "temp_dir.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 namespace {
 
 namespace fs = std::filesystem;
@@ -97,4 +97,4 @@ TEST(DepositFuzz, NoCrashNoStallEveryErrorAtTheFile) {
 }
 
 }  // namespace
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -38,7 +38,7 @@ std::map<Site, int> coverage(const SeededPoints& p, double s, bool axi) {
 // in the plane y = 0 in r-z), holds a point of the region: sampled on a 31-point lattice along each
 // axis, whose spacing b / 10 is far below the distances the coarsening keeps. (Shrunk by a part in
 // 1e9: a cube grown by its edge may just touch the region, within rounding.)
-bool grown_cube_meets(const case_file::Shape& region, const Vec3& x, double b, bool axi) {
+bool grown_cube_meets(const Shape& region, const Vec3& x, double b, bool axi) {
   constexpr int n = 31;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < (axi ? 1 : n); ++j)
@@ -50,8 +50,7 @@ bool grown_cube_meets(const case_file::Shape& region, const Vec3& x, double b, b
   return false;
 }
 
-void expect_same_body(const case_file::Shape& shape, double s, bool axi, int levels,
-                      const case_file::Shape& fine) {
+void expect_same_body(const Shape& shape, double s, bool axi, int levels, const Shape& fine) {
   const Lattice lattice{Vec3::Zero(), s, axi};
   const SeededPoints uniform = seed(shape, lattice);
   const SeededPoints coarse = seed_coarsened(shape, lattice, levels, fine);
@@ -91,8 +90,8 @@ void expect_same_body(const case_file::Shape& shape, double s, bool axi, int lev
 // The thesis' substrate (30 x 10 um cylinder, Table 5.3) at 0.25 um, fine under a 14 um
 // particle's footprint.
 TEST(CoarsenedSeeding, A3dSubstrateTilesTheSameSitesOnce) {
-  const case_file::Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
-  const case_file::Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
+  const Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
   expect_same_body(substrate, 0.25e-6, false, 2, fine);
 }
 
@@ -100,8 +99,8 @@ TEST(CoarsenedSeeding, A3dSubstrateTilesTheSameSitesOnce) {
 // cylinder by more than their edge, are coarse (a quarter substrate, as the 3D quarter impact).
 TEST(CoarsenedSeeding, CoarsensTheCornersOfTheBoxAroundACylindricalFineRegion) {
   const double s = 0.25e-6;
-  const case_file::Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
-  const case_file::Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
+  const Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
   const SeededPoints coarse = seed_coarsened(substrate, Lattice{Vec3::Zero(), s, false}, 2, fine);
   const Bounds box = bounding_box(fine);
   std::size_t in_corners = 0;
@@ -116,16 +115,15 @@ TEST(CoarsenedSeeding, CoarsensTheCornersOfTheBoxAroundACylindricalFineRegion) {
 }
 
 TEST(CoarsenedSeeding, AnRzSubstrateTilesTheSameSitesOnce) {
-  const case_file::Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
-  const case_file::Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
+  const Cylinder substrate{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const Cylinder fine{Vec3(0, 0, -5e-6), 8e-6, 5e-6};
   expect_same_body(substrate, 0.125e-6, true, 3, fine);
 }
 
 TEST(CoarsenedSeeding, ABoxAndASphereTileTheSameSitesOnce) {
-  const case_file::Box fine{Vec3(-1e-6, -1e-6, -1e-6), Vec3(1e-6, 1e-6, 1e-6)};
-  expect_same_body(case_file::Box{Vec3(-6e-6, -5e-6, -4e-6), Vec3(6e-6, 5e-6, 4e-6)}, 0.25e-6,
-                   false, 2, fine);
-  expect_same_body(case_file::Sphere{Vec3(0.1e-6, 0, 0), 6e-6}, 0.25e-6, false, 3, fine);
+  const Box fine{Vec3(-1e-6, -1e-6, -1e-6), Vec3(1e-6, 1e-6, 1e-6)};
+  expect_same_body(Box{Vec3(-6e-6, -5e-6, -4e-6), Vec3(6e-6, 5e-6, 4e-6)}, 0.25e-6, false, 2, fine);
+  expect_same_body(Sphere{Vec3(0.1e-6, 0, 0), 6e-6}, 0.25e-6, false, 3, fine);
 }
 
 }  // namespace

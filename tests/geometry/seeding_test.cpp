@@ -21,7 +21,7 @@ long count_surface(const std::vector<std::uint8_t>& outside) {
 TEST(Seeding, BoxHasExactCountVolumeAndSurfaceShell) {
   // A 2 x 1 x 1 um box at 0.1 um spacing from a lattice origin on its corner: 20 x 10 x 10 sites,
   // the outer shell on the surface: 2000 - 18 * 8 * 8.
-  const case_file::Box box{Vec3(0, 0, 0), Vec3(2e-6, 1e-6, 1e-6)};
+  const Box box{Vec3(0, 0, 0), Vec3(2e-6, 1e-6, 1e-6)};
   const SeededPoints p = seed(box, Lattice{Vec3::Zero(), 0.1e-6, false});
   ASSERT_EQ(p.position.size(), 2000u);
   EXPECT_NEAR(total(p.volume), 2e-18, 1e-30);
@@ -31,7 +31,7 @@ TEST(Seeding, BoxHasExactCountVolumeAndSurfaceShell) {
 TEST(Seeding, SphereVolumeConvergesToTheExactVolume) {
   // The lattice volume of a sphere of radius R = 20 spacings is within 1 % of 4/3 pi R^3.
   const double R = 7e-6;
-  const case_file::Sphere sphere{Vec3(0, 0, R), R};
+  const Sphere sphere{Vec3(0, 0, R), R};
   const SeededPoints p = seed(sphere, Lattice{Vec3::Zero(), R / 20.0, false});
   const double exact = 4.0 / 3.0 * pi * R * R * R;
   EXPECT_NEAR(total(p.volume), exact, 0.01 * exact);
@@ -43,7 +43,7 @@ TEST(Seeding, AxisymmetricCylinderRingsAddUpExactly) {
   // Rings at r = (i + 1/2) s, i < N, hold 2 pi s^2 (i + 1/2) s each per layer: the sum over i is
   // pi (N s)^2 s, so a cylinder R = N s, h = M s is filled exactly.
   const double s = 0.25e-6;
-  const case_file::Cylinder cyl{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
+  const Cylinder cyl{Vec3(0, 0, -10e-6), 15e-6, 10e-6};
   const SeededPoints p = seed(cyl, Lattice{Vec3::Zero(), s, true});
   ASSERT_EQ(p.position.size(), 60u * 40u);
   EXPECT_NEAR(total(p.volume), pi * 15e-6 * 15e-6 * 10e-6, 1e-12 * pi * 15e-6 * 15e-6 * 10e-6);
@@ -66,7 +66,7 @@ TEST(Seeding, AxisymmetricCylinderRingsAddUpExactly) {
 
 TEST(Seeding, AxisymmetricSphereMatchesThe3DVolume) {
   const double R = 7e-6;
-  const case_file::Sphere sphere{Vec3(0, 0, R), R};
+  const Sphere sphere{Vec3(0, 0, R), R};
   const SeededPoints p = seed(sphere, Lattice{Vec3::Zero(), R / 40.0, true});
   const double exact = 4.0 / 3.0 * pi * R * R * R;
   EXPECT_NEAR(total(p.volume), exact, 0.005 * exact);

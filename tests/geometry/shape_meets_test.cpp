@@ -10,7 +10,7 @@ namespace {
 Bounds box(const Vec3& lo, const Vec3& hi) { return Bounds{lo, hi}; }
 
 TEST(ShapeMeets, ASphereMeetsABoxWhereTheBoxReachesWithinItsRadius) {
-  const case_file::Sphere s{Vec3(0, 0, 0), 1.0};
+  const Sphere s{Vec3(0, 0, 0), 1.0};
   EXPECT_TRUE(meets(s, box(Vec3(-0.1, -0.1, -0.1), Vec3(0.1, 0.1, 0.1))));  // inside
   EXPECT_TRUE(meets(s, box(Vec3(0.9, -5, -5), Vec3(3, 5, 5))));             // a face cuts it
   // The corner (0.6, 0.6, 0.6) lies 1.039 from the centre; (0.5, 0.5, 0.5) 0.866.
@@ -20,7 +20,7 @@ TEST(ShapeMeets, ASphereMeetsABoxWhereTheBoxReachesWithinItsRadius) {
 }
 
 TEST(ShapeMeets, ACylinderMeetsABoxWhereBothItsHeightAndItsRadiusReach) {
-  const case_file::Cylinder c{Vec3(1, 2, -1), 2.0, 3.0};  // axis x = 1, y = 2; z from -1 to 2
+  const Cylinder c{Vec3(1, 2, -1), 2.0, 3.0};  // axis x = 1, y = 2; z from -1 to 2
   // In the corner of the cylinder's bounding box, (1 + 1.5, 2 + 1.5) lies 2.12 from the axis.
   EXPECT_FALSE(meets(c, box(Vec3(2.5, 3.5, 0), Vec3(3, 4, 1))));
   // (1 + 1.4, 2 + 1.4) lies 1.98 from it.
@@ -32,7 +32,7 @@ TEST(ShapeMeets, ACylinderMeetsABoxWhereBothItsHeightAndItsRadiusReach) {
 }
 
 TEST(ShapeMeets, ABoxMeetsABoxWhereTheirRangesOverlapOnEveryAxis) {
-  const case_file::Box b{Vec3(0, 0, 0), Vec3(1, 2, 3)};
+  const Box b{Vec3(0, 0, 0), Vec3(1, 2, 3)};
   EXPECT_TRUE(meets(b, box(Vec3(0.5, 1.5, 2.5), Vec3(4, 4, 4))));
   EXPECT_TRUE(meets(b, box(Vec3(1, 2, 3), Vec3(4, 4, 4))));  // touching at a corner
   EXPECT_FALSE(meets(b, box(Vec3(0.5, 2.1, 0.5), Vec3(4, 4, 4))));

@@ -1,8 +1,8 @@
-#include "case/shape_bounds.hpp"
-
 #include <type_traits>
 
-namespace coldspray::case_file {
+#include "geometry/shape.hpp"
+
+namespace coldspray::geometry {
 
 Bounds bounding_box(const Shape& shape) {
   return std::visit(
@@ -21,4 +21,4 @@ Bounds bounding_box(const Shape& shape) {
       shape);
 }
 
-}  // namespace coldspray::case_file
+}  // namespace coldspray::geometry

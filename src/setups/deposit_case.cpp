@@ -1,14 +1,28 @@
-#include "cli/deposit_case.hpp"
+#include "setups/deposit_case.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
 #include "case/grid_domain.hpp"
-#include "cli/case_text.hpp"
+#include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "setups/case_text.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
+
+studies::Placement deposit_placement(const DepositFile& file) {
+  studies::Placement placement = studies::place_particles(file.plan);
+  if (placement.unplaced >= 0) {
+    const std::size_t k = static_cast<std::size_t>(placement.unplaced);
+    throw InputError(
+        file.patch_where, "patch",
+        fmt::format("particle {} of {} found no place {} um clear of the particles placed before "
+                    "it in {} draws: widen the patch or the arrival_window, or spray fewer",
+                    k + 1, file.plan.count, file.plan.clearance * 1e6, studies::kPlacementTries));
+  }
+  return placement;
+}
 
 std::vector<std::string> particle_names(int count) {
   const int digits = static_cast<int>(std::to_string(count).size());
@@ -17,7 +31,7 @@ std::vector<std::string> particle_names(int count) {
   return names;
 }
 
-case_file::Box substrate_box(const DepositFile& file) {
+geometry::Box substrate_box(const DepositFile& file) {
   const double half_x = 0.5 * file.plan.patch[0] + file.substrate_margin;
   const double half_y = 0.5 * file.plan.patch[1] + file.substrate_margin;
   return {case_file::Vec3(-half_x, -half_y, -file.substrate_thickness),
@@ -31,7 +45,7 @@ namespace {
 void append_bodies(const DepositFile& file, const std::vector<studies::PlacedParticle>& particles,
                    double largest, GeneratedCase& g) {
   const std::vector<std::string> names = particle_names(static_cast<int>(particles.size()));
-  const case_file::Box substrate = substrate_box(file);
+  const geometry::Box substrate = substrate_box(file);
   const double half_x = substrate.max.x(), half_y = substrate.max.y();
   auto line = [&g](const std::string& text) { g.yaml += text + "\n"; };
   line("bodies:");
@@ -77,7 +91,7 @@ void append_bodies(const DepositFile& file, const std::vector<studies::PlacedPar
 
 GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& placement) {
   const std::vector<studies::PlacedParticle>& particles = placement.particles;
-  const case_file::Box substrate = substrate_box(file);
+  const geometry::Box substrate = substrate_box(file);
   const double half_x = substrate.max.x(), half_y = substrate.max.y();
   double last_arrival = 0.0, largest = 0.0, highest = 0.0;
   for (const studies::PlacedParticle& p : particles) {
@@ -143,4 +157,4 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
   return g;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

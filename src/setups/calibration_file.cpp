@@ -1,4 +1,4 @@
-#include "cli/calibration_file.hpp"
+#include "setups/calibration_file.hpp"
 
 #include <fmt/format.h>
 
@@ -9,11 +9,10 @@
 #include "case/codecs.hpp"
 #include "case/document.hpp"
 #include "case/reader.hpp"
-#include "cli/impact_case.hpp"
-#include "cli/impact_options.hpp"
 #include "core/error.hpp"
+#include "setups/impact_case.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 namespace {
 
@@ -432,4 +431,4 @@ case_file::Case calibration_case(const CalibrationFile& file, const studies::Cal
   return c;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -1,11 +1,11 @@
-#include "cli/case_text.hpp"
+#include "setups/case_text.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 std::string um(double metres) { return fmt::format("{:.12g} um", metres / 1e-6); }
 
@@ -82,4 +82,4 @@ void append_comment(std::string& y, std::string_view paragraph) {
   y += '\n';
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

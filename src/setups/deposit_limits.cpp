@@ -1,14 +1,15 @@
-#include "cli/deposit_limits.hpp"
+#include "setups/deposit_limits.hpp"
 
 #include <fmt/format.h>
 
 #include "case/size_estimate.hpp"
 #include "case/size_limits.hpp"
-#include "cli/deposit_case.hpp"
 #include "core/error.hpp"
+#include "geometry/shape.hpp"
+#include "setups/deposit_case.hpp"
 #include "studies/deposit_room.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 namespace {
 
@@ -30,7 +31,7 @@ void check_points(const DepositFile& file, const std::vector<double>& diameters,
                   const std::vector<case_file::Override>& sets) {
   double particles = 0.0;
   for (const double d : diameters)
-    particles += case_file::lattice_points(case_file::Sphere{{0, 0, 0}, 0.5 * d}, file.spacing);
+    particles += case_file::lattice_points(geometry::Sphere{{0, 0, 0}, 0.5 * d}, file.spacing);
   const double substrate = case_file::lattice_points(substrate_box(file), file.spacing);
   // The generated case is an MPM case with no cut at the grid's faces (deposit_case.cpp).
   case_file::Case c;
@@ -56,4 +57,4 @@ void check_deposit_size(const DepositFile& file, const std::vector<case_file::Ov
   check_points(file, diameters, sets);
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "case/load.hpp"
-#include "cli/deposit_file.hpp"
+#include "setups/deposit_file.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 // InputError (exit 2) at the file's particles.count when the particles' sizes (the ones
 // place_particles will draw) cannot fit the patch and the heights of their arrivals
@@ -18,4 +18,4 @@ namespace coldspray::cli {
 // the substrate's box over the spacing cubed.
 void check_deposit_size(const DepositFile& file, const std::vector<case_file::Override>& sets);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -1,4 +1,4 @@
-#include "cli/impact_case.hpp"
+#include "setups/impact_case.hpp"
 
 #include <fmt/format.h>
 
@@ -9,10 +9,12 @@
 #include <iterator>
 #include <string_view>
 
-#include "cli/case_text.hpp"
-#include "mpm/setup.hpp"
+#include "case/grid_domain.hpp"
+#include "core/error.hpp"
+#include "core/units.hpp"
+#include "setups/case_text.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 namespace {
 
@@ -40,7 +42,7 @@ double table_diameter_um(double d) {
 }
 
 // The grid of a 3D quarter model: from the symmetry planes x = 0 and y = 0 to the bodies'
-// bounds plus the margin the solver adds when it places the grid itself (mpm/setup.hpp), on
+// bounds plus the margin the solver adds when it places the grid itself (case/grid_domain.hpp), on
 // multiples of the cell size.
 struct QuarterGrid {
   case_file::Vec3 min, max;
@@ -50,8 +52,8 @@ QuarterGrid quarter_grid(double particle_diameter, const SubstrateSize& substrat
   const case_file::Vec3 hi(0.5 * substrate.diameter, 0.5 * substrate.diameter, particle_diameter);
   QuarterGrid g;
   for (int d = 0; d < 3; ++d) {
-    const double margin =
-        std::max(mpm::kGridMarginFraction * (hi[d] - lo[d]), mpm::kGridMarginMinCells * cell);
+    const double margin = std::max(case_file::kGridMarginFraction * (hi[d] - lo[d]),
+                                   case_file::kGridMarginMinCells * cell);
     // The tolerance keeps a bound that is a whole number of cells (26 um) from gaining one to
     // rounding (2.6e-5 / 1e-6 = 26.000000000000004), as the solver's own placement does.
     g.min[d] = d < 2 ? 0.0 : std::floor((lo[d] - margin) / cell + 1e-9) * cell;
@@ -194,6 +196,40 @@ std::string GridChoice::text() const {
   return um(cell_size) + "/" + um(spacing);
 }
 
+std::pair<double, double> parse_grid(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '/') continue;
+    const std::size_t next = text.find_first_not_of(' ', i + 1);
+    if (next == std::string::npos ||
+        !(std::isdigit(static_cast<unsigned char>(text[next])) || text[next] == '.'))
+      continue;
+    const double cell = units::parse_with_unit(text.substr(0, i), units::kLength);
+    const double spacing = units::parse_with_unit(text.substr(i + 1), units::kLength);
+    // A deposit file's grid: 0um/0um passed its reader and was refused only in the generated
+    // case, at a key of it ('bodies.p1.spacing') and at the file's particles, not its grid.
+    if (!(cell > 0.0) || !(spacing > 0.0))
+      throw UnitError("the cell and the spacing must be > 0, got '" + text + "'");
+    return {cell, spacing};
+  }
+  throw UnitError("expected CELL/SPACING with units, e.g. 0.7um/0.175um, got '" + text + "'");
+}
+
+GridChoice parse_grid_choice(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(' ');
+  if (first == std::string::npos || (text[first] != 'D' && text[first] != 'd')) {
+    const auto [cell, spacing] = parse_grid(text);
+    return {0.0, cell, spacing};
+  }
+  const std::size_t slash = text.find_first_not_of(' ', first + 1);
+  if (slash == std::string::npos || text[slash] != '/')
+    throw UnitError("expected D/N (N cells across the particle's diameter), got '" + text + "'");
+  const double cells = units::parse_as(text.substr(slash + 1), units::kDimensionless);
+  if (!(cells >= 2.0) ||
+      units::parse_quantity(text.substr(slash + 1)).dimension != units::kDimensionless)
+    throw UnitError("D/N needs a number of cells N >= 2, got '" + text + "'");
+  return {cells};
+}
+
 SubstrateSize substrate_size(double particle_diameter, SetUp setup) {
   if (setup == SetUp::Similar)
     return {kSimilarSubstrateDiameter * particle_diameter,
@@ -230,6 +266,15 @@ void size_impact(ImpactSpec& spec, const std::optional<GridChoice>& grid,
                             : 80e-9;
   spec.history_interval = 0.5e-9 * scale;
   spec.snapshot_interval = 10e-9 * scale;
+}
+
+void check_cell_fits(double cell_size, double diameter, const std::string& where,
+                     const std::string& key) {
+  if (cell_size > 0.0 && diameter < 2.0 * cell_size)
+    throw InputError(where, key,
+                     fmt::format("the cell ({:.4g} um) must be at most half the particle "
+                                 "diameter ({:.4g} um)",
+                                 cell_size * 1e6, diameter * 1e6));
 }
 
 namespace {
@@ -344,4 +389,4 @@ GeneratedCase impact_case(const ImpactSpec& spec) {
   return g;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -7,7 +7,7 @@
 
 #include "case/case.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 // A length in um, as short as reads back to (nearly) the same double: 12 significant digits
 // drop the noise of unit conversion (0.7e-6 * 1e6 = 0.7000000000000001) that a user never typed.
@@ -34,4 +34,4 @@ std::string one_line(std::string text);
 // user never saw.
 std::string yaml_scalar(std::string_view text);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

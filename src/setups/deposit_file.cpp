@@ -1,4 +1,4 @@
-#include "cli/deposit_file.hpp"
+#include "setups/deposit_file.hpp"
 
 #include <fmt/format.h>
 
@@ -11,12 +11,11 @@
 #include "case/codecs.hpp"
 #include "case/document.hpp"
 #include "case/reader.hpp"
-#include "cli/impact_case.hpp"
-#include "cli/impact_options.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
+#include "setups/impact_case.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 namespace {
 
@@ -118,7 +117,8 @@ struct FileEntry {
   SubstrateEntry substrate;
   PatchEntry patch;
   double arrival_window = 0.0;
-  // Unset: a verdict window after the typical particle has left the contact (cli/impact_case.hpp).
+  // Unset: a verdict window after the typical particle has left the contact
+  // (setups/impact_case.hpp).
   std::optional<double> settle_time;
   std::optional<double> voxel;
   std::string bonding = "energy", contact_normal = "substrate";
@@ -217,4 +217,4 @@ DepositFile read_deposit_file(const std::string& path) {
   return d;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -8,7 +8,7 @@
 
 #include "studies/deposit_placement.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 struct DepositFile {
   std::string path;
@@ -34,4 +34,4 @@ struct DepositFile {
 // Reads and checks the file; InputError (exit 2) naming the file, line and key.
 DepositFile read_deposit_file(const std::string& path);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -10,11 +10,11 @@
 
 #include "case/case.hpp"
 #include "case/load.hpp"
-#include "cli/impact_case.hpp"
+#include "setups/impact_case.hpp"
 #include "studies/activation_calibration.hpp"
 #include "studies/calibration.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 struct CalibrationFile {
   std::string path;
@@ -23,7 +23,7 @@ struct CalibrationFile {
   std::string substrate_material;  // empty: the particle's
   std::string model = "energy";    // energy | strain: which two parameters x1, x2 are
   case_file::Geometry geometry = case_file::Geometry::Axisymmetric;
-  SetUp setup = SetUp::Similar;       // the impacts' set-up (cli/impact_case.hpp)
+  SetUp setup = SetUp::Similar;       // the impacts' set-up (setups/impact_case.hpp)
   std::optional<double> end_time;     // unset: the set-up's
   bool verdict_window_given = false;  // metrics.verdict_window given: not the set-up's
   std::optional<double> floor;
@@ -47,8 +47,8 @@ studies::ActivationPlan activation_plan(const CalibrationFile& file);
 // The impact of one run of `calibrates: critical-penetration`, checked like a case file.
 case_file::Case activation_case(const CalibrationFile& file, const studies::ActivationRun& run);
 
-// The impact case of one run of the calibration (cli/impact_case.hpp), checked like a case file;
+// The impact case of one run of the calibration (setups/impact_case.hpp), checked like a case file;
 // errors name the calibration file's line that gave the value.
 case_file::Case calibration_case(const CalibrationFile& file, const studies::CalibrationRun& run);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups

@@ -1,16 +1,18 @@
 // The thesis' single-particle test (a sphere hitting a cylindrical substrate, thesis §4.3.3 and
-// §5.2.2) as a case file, for `coldspray impact`. The case is generated as YAML text so that it
-// goes through the same reader and checks as any case file and can be written out and edited.
+// §5.2.2) as a case file, for `coldspray impact`, `vcrit` and `calibrate` and the benchmarks. The
+// case is generated as YAML text so that it goes through the same reader and checks as any case
+// file and can be written out and edited.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/case.hpp"
 #include "case/load.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::setups {
 
 // Which single-particle set-up `impact` (and `vcrit`, `calibrate`) builds (docs/impact.md,
 // "The set-up").
@@ -59,6 +61,14 @@ struct GridChoice {
   double point_spacing(double diameter) const;
   std::string text() const;  // as given: "D/40" or "0.7um/0.175um"
 };
+
+// "CELL/SPACING" (e.g. 0.7um/0.175um) in metres: split at the '/' that a number follows, since
+// units hold '/' too (m/s). Throws UnitError, also for a cell or spacing <= 0.
+std::pair<double, double> parse_grid(const std::string& text);
+
+// "D/N", N > 0 cells across the particle's diameter (the size-similar set-up's resolution), or
+// "CELL/SPACING" as parse_grid. Throws UnitError.
+GridChoice parse_grid_choice(const std::string& text);
 
 // The substrate cylinder for a particle diameter, m. Similar: kSimilarSubstrateDiameter d by
 // kSimilarSubstrateHeight d. Thesis (docs/impact.md, "The thesis' set-up"):
@@ -133,6 +143,11 @@ struct GeneratedCase {
 void size_impact(ImpactSpec& spec, const std::optional<GridChoice>& grid,
                  const std::optional<double>& end_time);
 
+// A particle narrower than two cells has next to no points and no shape to deform: InputError
+// at `where` (an option or a file location) and `key`, rather than the seeding's "no points".
+void check_cell_fits(double cell_size, double diameter, const std::string& where,
+                     const std::string& key = "");
+
 GeneratedCase impact_case(const ImpactSpec& spec);
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::setups
