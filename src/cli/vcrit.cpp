@@ -62,6 +62,46 @@ std::string number_text(double x, const char* format) {
   return std::isnan(x) ? std::string("-") : fmt::format(fmt::runtime(format), x);
 }
 
+// The search's settings from the options; InputError at the option at fault.
+studies::VcritOptions vcrit_options(const Options& opt) {
+  studies::VcritOptions o;
+  o.diameters = parse_diameters(opt.diameters);
+  o.vmin = parse_speed("--vmin", opt.vmin);
+  o.vmax = parse_speed("--vmax", opt.vmax);
+  o.tol = parse_option_quantity("--tol", opt.tol, units::kVelocity);
+  if (!(o.vmax > o.vmin)) throw InputError("--vmax", "", "must be greater than --vmin");
+  if (!(o.tol >= 1e-8 * o.vmax))
+    throw InputError("--tol", "", fmt::format("must be >= {:.3g} m/s", 1e-8 * o.vmax));
+  o.max_runs = opt.max_runs;
+  o.jobs = opt.jobs;
+  o.threads_per_job = opt.threads_per_job;
+  o.progress = !opt.quiet;
+  o.out_dir = opt.out_dir.empty() ? "out/vcrit-" + opt.impact.material : opt.out_dir;
+  return o;
+}
+
+// The table of critical velocities, one line per diameter.
+void print_vcrit_table(const std::string& material, const studies::VcritOptions& o,
+                       const std::vector<studies::VcritRow>& rows) {
+  std::cout << fmt::format(
+      "vcrit of {} (search over {:.6g}-{:.6g} m/s to {:.3g} m/s, cut where the penetration "
+      "reaches the critical one; bonded: the verdict of each "
+      "impact's summary, undecided counted as not bonded):\n",
+      material, o.vmin, o.vmax, o.tol);
+  std::cout << "  d (um)  vcrit (m/s)  bracket (m/s)  margin at vcrit, below (m/s)  runs  "
+               "undecided  status\n";
+  for (const auto& r : rows)
+    std::cout << fmt::format(
+        "  {:<6.4g}  {:>11}  {:>13}  {:>28}  {:>4}  {:>9}  {}\n", r.diameter * 1e6,
+        number_text(r.search.threshold, "{:.5g}"),
+        r.search.found() ? fmt::format("{:.5g}-{:.5g}", r.search.lower, r.search.upper)
+                         : std::string("-"),
+        r.search.found() ? fmt::format("{}, {} ({})", number_text(r.margin, "{:+.3g}"),
+                                       number_text(r.lower_margin, "{:+.3g}"), r.lower_outcome)
+                         : std::string("-"),
+        r.runs_used, r.undecided, r.status);
+}
+
 }  // namespace
 
 void add_vcrit(CLI::App& app) {
@@ -91,19 +131,7 @@ void add_vcrit(CLI::App& app) {
   sub->add_flag("--quiet", opt->quiet, "No progress line");
   sub->callback([opt, sub] {
     if (const std::string w = calibration_warning(opt->impact); !w.empty()) std::cerr << w << "\n";
-    studies::VcritOptions o;
-    o.diameters = parse_diameters(opt->diameters);
-    o.vmin = parse_speed("--vmin", opt->vmin);
-    o.vmax = parse_speed("--vmax", opt->vmax);
-    o.tol = parse_option_quantity("--tol", opt->tol, units::kVelocity);
-    if (!(o.vmax > o.vmin)) throw InputError("--vmax", "", "must be greater than --vmin");
-    if (!(o.tol >= 1e-8 * o.vmax))
-      throw InputError("--tol", "", fmt::format("must be >= {:.3g} m/s", 1e-8 * o.vmax));
-    o.max_runs = opt->max_runs;
-    o.jobs = opt->jobs;
-    o.threads_per_job = opt->threads_per_job;
-    o.progress = !opt->quiet;
-    o.out_dir = opt->out_dir.empty() ? "out/vcrit-" + opt->impact.material : opt->out_dir;
+    studies::VcritOptions o = vcrit_options(*opt);
     const std::vector<case_file::Override> overrides = parse_overrides(opt->sets);
     const std::string command =
         command_line("coldspray impact", *sub,
@@ -133,23 +161,7 @@ void add_vcrit(CLI::App& app) {
     }
     studies::write_vcrit_csv(o.out_dir / "vcrit.csv", rows);
     studies::write_vcrit_runs_csv(o.out_dir, o.diameters);
-    std::cout << fmt::format(
-        "vcrit of {} (search over {:.6g}-{:.6g} m/s to {:.3g} m/s, cut where the penetration "
-        "reaches the critical one; bonded: the verdict of each "
-        "impact's summary, undecided counted as not bonded):\n",
-        opt->impact.material, o.vmin, o.vmax, o.tol);
-    std::cout << "  d (um)  vcrit (m/s)  bracket (m/s)  margin at vcrit, below (m/s)  runs  "
-                 "undecided  status\n";
-    for (const auto& r : rows)
-      std::cout << fmt::format(
-          "  {:<6.4g}  {:>11}  {:>13}  {:>28}  {:>4}  {:>9}  {}\n", r.diameter * 1e6,
-          number_text(r.search.threshold, "{:.5g}"),
-          r.search.found() ? fmt::format("{:.5g}-{:.5g}", r.search.lower, r.search.upper)
-                           : std::string("-"),
-          r.search.found() ? fmt::format("{}, {} ({})", number_text(r.margin, "{:+.3g}"),
-                                         number_text(r.lower_margin, "{:+.3g}"), r.lower_outcome)
-                           : std::string("-"),
-          r.runs_used, r.undecided, r.status);
+    print_vcrit_table(opt->impact.material, o, rows);
     if (const auto fit = studies::fit_vcrit(rows)) {
       studies::write_vcrit_fit(o.out_dir / "vcrit_fit.json", *fit);
       std::cout << fmt::format(
