@@ -140,12 +140,8 @@ void check_initial_gap(const case_file::Case& c, const State& s) {
     }
 }
 
-}  // namespace
-
-State build_state(const case_file::Case& c) {
-  State s;
-  s.settings = *c.peridynamics;
-  s.viscosity = c.solver.artificial_viscosity;
+// The bodies seeded, cut at the model's symmetry planes and laid out as the state's points.
+std::vector<bodies::SeededBody> seed_points(const case_file::Case& c, State& s) {
   std::vector<bodies::SeededBody> seeded = bodies::seed_bodies(c);
   if (c.symmetry) {
     s.symmetry_plane = {c.symmetry->x, c.symmetry->y};
@@ -155,6 +151,11 @@ State build_state(const case_file::Case& c) {
     bodies::cut_at_planes(c, planes, "its symmetry planes", seeded);
   }
   bodies::lay_out_bodies(c, seeded, s);
+  return seeded;
+}
+
+// The neighbour search's reference positions, the force arrays and each body's signal speed.
+void init_point_arrays(State& s) {
   const std::size_t n = s.points.size();
   Neighbours& N = s.neighbours;
   N.real = n;
@@ -171,7 +172,6 @@ State build_state(const case_file::Case& c) {
     s.external_force[d].assign(n, 0.0);
     s.contact_kick[d].assign(n, 0.0);
   }
-  s.cfl = c.solver.cfl;
   s.advancing.assign(s.bodies.size(), 1);
   s.fast_bodies.assign(s.bodies.size(), 0);
   s.body_signal_speed.assign(s.bodies.size(), 0.0);
@@ -182,7 +182,11 @@ State build_state(const case_file::Case& c) {
                                      s.points.velocity[2][i] * s.points.velocity[2][i]);
       s.body_signal_speed[b] = std::max(s.body_signal_speed[b], s.points.sound_speed[i] + speed);
     }
+}
 
+// Each body's bond constants: horizon delta, the micromodulus 18 K / (pi delta^4) and the
+// control's G_s over the control length; returns the horizons.
+std::vector<double> init_bond_constants(State& s) {
   std::vector<double> horizons;
   s.min_spacing = s.bodies.front().spacing;
   for (const bodies::BodyRange& body : s.bodies) {
@@ -194,11 +198,13 @@ State build_state(const case_file::Case& c) {
     horizons.push_back(delta);
     s.min_spacing = std::min(s.min_spacing, body.spacing);
   }
-  add_ghosts(s);
-  refresh_neighbours(s);
-  s.families = build_families(N, s.bodies, horizons);
-  s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
-                      s.families.bonds()};
+  return horizons;
+}
+
+// The per-point and per-neighbour arrays of the correspondence step, sized to the families.
+void init_family_arrays(const case_file::Case& c, State& s) {
+  const std::size_t n = s.points.size();
+  const Neighbours& N = s.neighbours;
   s.family_size.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     s.family_size[i] = static_cast<std::uint32_t>(s.families.begin[i + 1] - s.families.begin[i]);
@@ -221,8 +227,11 @@ State build_state(const case_file::Case& c) {
     s.slip_fit.assign(N.size(), QuadraticMap::Zero());
     s.slipped.assign(N.size(), 0);
   }
+}
 
-  s.held.assign(n, 0);
+// Which axes of each point are held: fixed faces in all three, roller faces normal to the face.
+void hold_faces(const case_file::Case& c, const std::vector<bodies::SeededBody>& seeded, State& s) {
+  s.held.assign(s.points.size(), 0);
   bodies::prepare_grip(s, c.grip);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const std::uint8_t fixed = bodies::faces_bits(c.bodies[b].fixed);
@@ -235,7 +244,11 @@ State build_state(const case_file::Case& c) {
     for (std::size_t i = 0; i < seeded[b].points.outside.size(); ++i)
       if (seeded[b].points.outside[i] & fixed) s.held[s.bodies[b].begin + i] = 0b111;
   }
+}
 
+// The contact law of every pair of bodies and the contact list built to the largest reach.
+void set_up_contact(const case_file::Case& c, State& s) {
+  const Neighbours& N = s.neighbours;
   const std::size_t m = s.bodies.size();
   double reach = 0.0;
   for (std::size_t a = 0; a < m; ++a)
@@ -248,6 +261,26 @@ State build_state(const case_file::Case& c) {
   // An adhesive contact can hold a body: the verdict then reads the area it holds.
   s.bonding = c.contact.model != case_file::ContactModel::Repulsive;
   s.contact.build(N, reach + s.contact.skin);
+}
+
+}  // namespace
+
+State build_state(const case_file::Case& c) {
+  State s;
+  s.settings = *c.peridynamics;
+  s.viscosity = c.solver.artificial_viscosity;
+  s.cfl = c.solver.cfl;
+  const std::vector<bodies::SeededBody> seeded = seed_points(c, s);
+  init_point_arrays(s);
+  const std::vector<double> horizons = init_bond_constants(s);
+  add_ghosts(s);
+  refresh_neighbours(s);
+  s.families = build_families(s.neighbours, s.bodies, horizons);
+  s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
+                      s.families.bonds()};
+  init_family_arrays(c, s);
+  hold_faces(c, seeded, s);
+  set_up_contact(c, s);
   check_initial_gap(c, s);
   return s;
 }

@@ -138,8 +138,10 @@ Eigen::VectorXd LogisticFit::theta_unstandardized() const {
   return out;
 }
 
-LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptions& options) {
-  check_options(options);
+namespace {
+
+// Labels 0 or 1, finite inputs, and both classes present: else there is no boundary to fit.
+void check_samples(const std::vector<Sample>& samples) {
   if (samples.empty()) throw std::invalid_argument("logistic regression: no samples");
   std::size_t positives = 0;
   for (const Sample& s : samples) {
@@ -153,43 +155,32 @@ LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptio
   if (positives == 0 || positives == samples.size())
     throw std::invalid_argument(
         "logistic regression: the samples hold only one class; there is no boundary to fit");
+}
 
-  LogisticFit fit;
-  fit.degree = options.degree;
-  fit.samples = samples.size();
-  fit.scaling = fit_scaling(samples, options);
-  const Eigen::MatrixXd X = design_matrix(samples, fit.scaling, options.degree);
-  Eigen::VectorXd y(X.rows());
-  for (Eigen::Index i = 0; i < X.rows(); ++i) y(i) = samples[static_cast<std::size_t>(i)].y;
+// The penalised problem: design matrix X, labels y, ridge lambda with R = diag(0, 1, ..., 1)
+// (the ridge leaves the intercept free).
+struct RidgeProblem {
+  const Eigen::MatrixXd& X;
+  Eigen::VectorXd y;
+  Eigen::VectorXd R;
+  double lambda;
+  double m;
 
-  const double m = static_cast<double>(X.rows());
-  const double lambda = options.ridge;
-  const Eigen::Index n = X.cols();
-  // R = diag(0, 1, ..., 1): the ridge leaves the intercept free.
-  Eigen::VectorXd R = Eigen::VectorXd::Ones(n);
-  R(0) = 0.0;
-
-  Eigen::VectorXd theta = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd Z = X * theta;
-  double cost = penalised_cost(Z, y, theta, lambda);
-  Eigen::VectorXd grad(n);
-  auto gradient = [&](const Eigen::VectorXd& Zc, const Eigen::VectorXd& th) {
-    Eigen::VectorXd h = Zc.unaryExpr([](double v) { return sigmoid(v); });
-    // Eq 4.14 plus the ridge part (lambda/m) R theta.
-    grad = X.transpose() * (h - y) / m + (lambda / m) * R.cwiseProduct(th);
+  // The hypothesis h = sigmoid(Z) and, into grad, eq 4.14 plus the ridge part (lambda/m) R theta.
+  Eigen::VectorXd gradient(const Eigen::VectorXd& Z, const Eigen::VectorXd& theta,
+                           Eigen::VectorXd& grad) const {
+    Eigen::VectorXd h = Z.unaryExpr([](double v) { return sigmoid(v); });
+    grad = X.transpose() * (h - y) / m + (lambda / m) * R.cwiseProduct(theta);
     return h;
-  };
-  Eigen::VectorXd h = gradient(Z, theta);
+  }
 
-  int iteration = 0;
-  while (grad.norm() > options.gradient_tolerance && iteration < options.max_iterations) {
-    ++iteration;
-    // Hessian (1/m) X^T W X + (lambda/m) R, W = diag(h (1 - h)).
+  // The Newton step on the Hessian (1/m) X^T W X + (lambda/m) R, W = diag(h (1 - h)). If the
+  // Hessian is numerically singular (no ridge and separated data, w ~ 0), a Levenberg term is
+  // added until LDLT gives a descent direction; steepest descent is the last resort.
+  Eigen::VectorXd newton_step(const Eigen::VectorXd& h, const Eigen::VectorXd& grad) const {
     const Eigen::VectorXd w = h.cwiseProduct(Eigen::VectorXd::Ones(h.size()) - h);
     Eigen::MatrixXd H = X.transpose() * w.asDiagonal() * X / m;
     H.diagonal() += (lambda / m) * R;
-    // If the Hessian is numerically singular (no ridge and separated data, w ~ 0), add a
-    // Levenberg term until LDLT gives a descent direction.
     Eigen::VectorXd step;
     double damping = 0.0;
     const double base = std::max(H.diagonal().maxCoeff(), 1e-300);
@@ -199,19 +190,21 @@ LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptio
       Eigen::LDLT<Eigen::MatrixXd> ldlt(Hd);
       if (ldlt.info() == Eigen::Success && ldlt.isPositive()) {
         step = -ldlt.solve(grad);
-        if (step.allFinite() && step.dot(grad) < 0.0) break;
+        if (step.allFinite() && step.dot(grad) < 0.0) return step;
       }
-      step.resize(0);
       damping = damping == 0.0 ? 1e-10 * base : 10.0 * damping;
     }
-    if (step.size() == 0) step = -grad;  // steepest descent as the last resort
+    return -grad;
+  }
 
-    // Step halving: accept the first fraction of the step that does not raise the cost. Near the
-    // optimum a Newton step lowers the cost by less than its rounding error (~1e-16), so a rise
-    // within `slack` still counts as no rise; otherwise the last digits would stall the descent.
+  // Step halving: accept the first fraction of the step that does not raise the cost. Near the
+  // optimum a Newton step lowers the cost by less than its rounding error (~1e-16), so a rise
+  // within `slack` still counts as no rise; otherwise the last digits would stall the descent.
+  // False when no decrease is possible at machine precision.
+  bool descend(const Eigen::VectorXd& step, Eigen::VectorXd& theta, Eigen::VectorXd& Z,
+               double& cost) const {
     const double slack = 1e-13 * std::max(1.0, std::abs(cost));
     double t = 1.0;
-    bool accepted = false;
     for (int halving = 0; halving < 50; ++halving, t *= 0.5) {
       const Eigen::VectorXd trial = theta + t * step;
       const Eigen::VectorXd Zt = X * trial;
@@ -220,12 +213,38 @@ LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptio
         theta = trial;
         Z = Zt;
         cost = ct;
-        accepted = true;
-        break;
+        return true;
       }
     }
-    if (!accepted) break;  // no decrease is possible at machine precision
-    h = gradient(Z, theta);
+    return false;
+  }
+};
+
+}  // namespace
+
+LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptions& options) {
+  check_options(options);
+  check_samples(samples);
+  LogisticFit fit;
+  fit.degree = options.degree;
+  fit.samples = samples.size();
+  fit.scaling = fit_scaling(samples, options);
+  const Eigen::MatrixXd X = design_matrix(samples, fit.scaling, options.degree);
+  RidgeProblem p{X, Eigen::VectorXd(X.rows()), Eigen::VectorXd::Ones(X.cols()), options.ridge,
+                 static_cast<double>(X.rows())};
+  for (Eigen::Index i = 0; i < X.rows(); ++i) p.y(i) = samples[static_cast<std::size_t>(i)].y;
+  p.R(0) = 0.0;
+
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(X.cols());
+  Eigen::VectorXd Z = X * theta;
+  double cost = penalised_cost(Z, p.y, theta, p.lambda);
+  Eigen::VectorXd grad(X.cols());
+  Eigen::VectorXd h = p.gradient(Z, theta, grad);
+  int iteration = 0;
+  while (grad.norm() > options.gradient_tolerance && iteration < options.max_iterations) {
+    ++iteration;
+    if (!p.descend(p.newton_step(h, grad), theta, Z, cost)) break;
+    h = p.gradient(Z, theta, grad);
   }
 
   fit.theta = theta;
@@ -235,8 +254,8 @@ LogisticFit fit_logistic(const std::vector<Sample>& samples, const LogisticOptio
   fit.converged = fit.gradient_norm <= options.gradient_tolerance;
   std::size_t correct = 0;
   for (Eigen::Index i = 0; i < Z.size(); ++i)
-    if ((Z(i) >= 0.0) == (y(i) == 1.0)) ++correct;
-  fit.accuracy = static_cast<double>(correct) / m;
+    if ((Z(i) >= 0.0) == (p.y(i) == 1.0)) ++correct;
+  fit.accuracy = static_cast<double>(correct) / p.m;
   return fit;
 }
 
