@@ -75,46 +75,42 @@ inline double second_secant_point(double x0, double f0, double three_G, double s
 // Secant evaluations before the bracketed solve takes over.
 inline constexpr int kSecantMaxEvaluations = 8;
 
-// The return of a point with trial von Mises stress `trial` > 0 and `three_G` = 3G > 0, where
-// `flow(x)` is the flow stress at the increment x (flow(0): at eqps^n and the rate floor),
-// `guess` an estimate of x (0 for none) and `slope` the last step's residual_slope (0 for none).
-// Returns x = 0 and flow(0) where the point does not yield (f(0) <= 0), else the root of f;
-// `evaluations` counts the yield check too.
-template <class Flow>
-PlasticIncrement consistent_return(double trial, double three_G, double guess, double slope,
-                                   Flow&& flow) {
-  const double tolerance = kReturnTolerance * trial;
+// The state of one return: the best evaluation so far, the last one (for the slope) and the
+// bracket [a, b] with f(a) > 0 >= f(b). Its upper end is first placed at b = x + f(x)/(3G) from
+// a point x that yields, where f(b) = sigma_y(x) - sigma_y(b) <= 0 before it is evaluated.
+struct ReturnState {
+  double trial = 0.0, three_G = 0.0, tolerance = 0.0;
+  double slope = 0.0;  // the last step's residual_slope, then the latest secant slope
   PlasticIncrement best;
   double best_residual = 0.0;
   // The last evaluation, for the slope between it and the next.
   double last_x = 0.0, last_f = 0.0;
   bool evaluated = false;
-  auto track_slope = [&](double x, double fx) {
+  double a = 0.0, fa = 0.0, b = 0.0, fb = 0.0;
+  double flow_below_b = 0.0;  // sigma_y(x) of the point b was placed from
+  bool fb_known = false;
+  bool yields = false;  // some f(x) > 0 seen: then f(0) > 0 too, f decreases
+
+  void track_slope(double x, double fx) {
     if (evaluated && x != last_x) slope = -(fx - last_f) / (x - last_x);
     last_x = x;
     last_f = fx;
     evaluated = true;
-  };
-  auto result = [&] {
+  }
+  PlasticIncrement result() {
     best.residual_slope = slope;
     return best;
-  };
+  }
   // Counts an evaluation f(x) = fx at x > 0, with flow_x = sigma_y(x), and keeps the best.
-  auto record = [&](double x, double flow_x, double fx) {
+  void record(double x, double flow_x, double fx) {
     ++best.evaluations;
     track_slope(x, fx);
     if (best.eqps_increment == 0.0 || std::abs(fx) < best_residual) {
       best = {x, flow_x, best.evaluations};
       best_residual = std::abs(fx);
     }
-  };
-  // The bracket: f(a) > 0 >= f(b). Its upper end is first placed at b = x + f(x)/(3G) from a
-  // point x that yields, where f(b) = sigma_y(x) - sigma_y(b) <= 0 before it is evaluated.
-  double a = 0.0, fa = 0.0, b = 0.0, fb = 0.0;
-  double flow_below_b = 0.0;  // sigma_y(x) of the point b was placed from
-  bool fb_known = false;
-  bool yields = false;  // some f(x) > 0 seen: then f(0) > 0 too, f decreases
-  auto narrow = [&](double x, double fx) {
+  }
+  void narrow(double x, double fx) {
     if (fx > 0.0) {
       a = x;
       fa = fx;
@@ -124,94 +120,114 @@ PlasticIncrement consistent_return(double trial, double three_G, double guess, d
       fb = fx;
       fb_known = true;
     }
-  };
-  // The yield check, f(0) > 0 (at eqps^n and the rate floor); its f(0) and sigma_y(0) are the
-  // bracket's lower end and the base of b = x_max.
-  auto yields_at_rest = [&] {
-    const double flow_0 = flow(0.0);
-    ++best.evaluations;
-    fa = trial - flow_0;
-    track_slope(0.0, fa);
-    flow_below_b = flow_0;
-    yields = fa > 0.0;
-    if (!yields) best = {0.0, flow_0, best.evaluations};
-    return yields;
-  };
-
-  const bool warm = guess > 0.0 && guess < trial / three_G;
-  double x0 = guess, f0 = 0.0;
-  if (warm) {
-    const double flow_0 = flow(x0);
-    f0 = trial - three_G * x0 - flow_0;
-    record(x0, flow_0, f0);
-    narrow(x0, f0);
-    if (f0 > 0.0) {
-      b = x0 + f0 / three_G;
-      flow_below_b = flow_0;
-    }
-  } else {
-    if (!yields_at_rest()) return result();
-    b = fa / three_G;  // x_max
   }
+};
 
-  // Secant steps from the guess, each evaluation narrowing the bracket.
-  if (warm) {
-    double x1 = second_secant_point(x0, f0, three_G, slope);
-    while (best_residual > tolerance && best.evaluations < kSecantMaxEvaluations && x1 > a &&
-           x1 < b) {
-      const double flow_1 = flow(x1);
-      const double f1 = trial - three_G * x1 - flow_1;
-      record(x1, flow_1, f1);
-      narrow(x1, f1);
-      const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
-      x0 = x1;
-      f0 = f1;
-      x1 = x2;
-    }
-    // No step showed that the point yields: unless the secant steps converged, the yield check
-    // decides (a = 0 gets its f). A converged x > 0 needs none: f decreases, so
-    // f(0) >= f(x) >= -tolerance, and the point yields or is within the tolerance of yielding,
-    // where x <= tolerance/(3G) is below what the solve resolves anyway.
-    if (!yields && best_residual > tolerance && !yields_at_rest()) return result();
-  }
-  if (!fb_known && (best.eqps_increment == 0.0 || best_residual > tolerance)) {
-    const double flow_b = flow(b);
-    fb = flow_below_b - flow_b;
-    record(b, flow_b, fb);
-  }
+// The yield check, f(0) > 0 (at eqps^n and the rate floor); its f(0) and sigma_y(0) are the
+// bracket's lower end and the base of b = x_max.
+template <class Flow>
+bool yields_at_rest(ReturnState& r, Flow&& flow) {
+  const double flow_0 = flow(0.0);
+  ++r.best.evaluations;
+  r.fa = r.trial - flow_0;
+  r.track_slope(0.0, r.fa);
+  r.flow_below_b = flow_0;
+  r.yields = r.fa > 0.0;
+  if (!r.yields) r.best = {0.0, flow_0, r.best.evaluations};
+  return r.yields;
+}
 
-  // Anderson-Bjorck regula falsi on [a, b].
-  int side = 0;          // which end the last step moved: -1 a, +1 b, 0 after a bisection
-  int stalled = 0;       // iterations since the bracket last halved
-  double width = b - a;  // bracket width when it last halved
-  while (best.evaluations < kReturnMaxEvaluations && best_residual > tolerance) {
+// Secant steps from the guess x0, each evaluation narrowing the bracket.
+template <class Flow>
+void secant_steps(ReturnState& r, double x0, Flow&& flow) {
+  const double flow_0 = flow(x0);
+  double f0 = r.trial - r.three_G * x0 - flow_0;
+  r.record(x0, flow_0, f0);
+  r.narrow(x0, f0);
+  if (f0 > 0.0) {
+    r.b = x0 + f0 / r.three_G;
+    r.flow_below_b = flow_0;
+  }
+  double x1 = second_secant_point(x0, f0, r.three_G, r.slope);
+  while (r.best_residual > r.tolerance && r.best.evaluations < kSecantMaxEvaluations && x1 > r.a &&
+         x1 < r.b) {
+    const double flow_1 = flow(x1);
+    const double f1 = r.trial - r.three_G * x1 - flow_1;
+    r.record(x1, flow_1, f1);
+    r.narrow(x1, f1);
+    const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    x0 = x1;
+    f0 = f1;
+    x1 = x2;
+  }
+}
+
+// Anderson-Bjorck regula falsi on [a, b], until converged or out of evaluations.
+template <class Flow>
+void regula_falsi(ReturnState& r, Flow&& flow) {
+  int side = 0;              // which end the last step moved: -1 a, +1 b, 0 after a bisection
+  int stalled = 0;           // iterations since the bracket last halved
+  double width = r.b - r.a;  // bracket width when it last halved
+  while (r.best.evaluations < kReturnMaxEvaluations && r.best_residual > r.tolerance) {
     const bool bisect = stalled >= 4;
-    double x = bisect ? 0.5 * (a + b) : (a * fb - b * fa) / (fb - fa);
-    if (!(x > a && x < b)) x = 0.5 * (a + b);  // regula falsi rounded onto an end
-    if (!(x > a && x < b)) break;              // the bracket is two adjacent doubles
+    double x = bisect ? 0.5 * (r.a + r.b) : (r.a * r.fb - r.b * r.fa) / (r.fb - r.fa);
+    if (!(x > r.a && x < r.b)) x = 0.5 * (r.a + r.b);  // regula falsi rounded onto an end
+    if (!(x > r.a && x < r.b)) break;                  // the bracket is two adjacent doubles
     const double flow_x = flow(x);
-    const double fx = trial - three_G * x - flow_x;
-    record(x, flow_x, fx);
+    const double fx = r.trial - r.three_G * x - flow_x;
+    r.record(x, flow_x, fx);
     // Anderson-Bjorck: when the same end moves twice, scale the other end's value down.
     if (fx > 0.0) {
-      if (side == -1) fb *= fx < fa ? 1.0 - fx / fa : 0.5;
-      a = x;
-      fa = fx;
+      if (side == -1) r.fb *= fx < r.fa ? 1.0 - fx / r.fa : 0.5;
+      r.a = x;
+      r.fa = fx;
       side = bisect ? 0 : -1;
     } else {
-      if (side == +1) fa *= fx > fb ? 1.0 - fx / fb : 0.5;
-      b = x;
-      fb = fx;
+      if (side == +1) r.fa *= fx > r.fb ? 1.0 - fx / r.fb : 0.5;
+      r.b = x;
+      r.fb = fx;
       side = bisect ? 0 : +1;
     }
-    if (b - a <= 0.5 * width) {
-      width = b - a;
+    if (r.b - r.a <= 0.5 * width) {
+      width = r.b - r.a;
       stalled = 0;
     } else {
       ++stalled;
     }
   }
-  return result();
+}
+
+// The return of a point with trial von Mises stress `trial` > 0 and `three_G` = 3G > 0, where
+// `flow(x)` is the flow stress at the increment x (flow(0): at eqps^n and the rate floor),
+// `guess` an estimate of x (0 for none) and `slope` the last step's residual_slope (0 for none).
+// Returns x = 0 and flow(0) where the point does not yield (f(0) <= 0), else the root of f;
+// `evaluations` counts the yield check too.
+template <class Flow>
+PlasticIncrement consistent_return(double trial, double three_G, double guess, double slope,
+                                   Flow&& flow) {
+  ReturnState r;
+  r.trial = trial;
+  r.three_G = three_G;
+  r.tolerance = kReturnTolerance * trial;
+  r.slope = slope;
+  if (guess > 0.0 && guess < trial / three_G) {
+    secant_steps(r, guess, flow);
+    // No step showed that the point yields: unless the secant steps converged, the yield check
+    // decides (a = 0 gets its f). A converged x > 0 needs none: f decreases, so
+    // f(0) >= f(x) >= -tolerance, and the point yields or is within the tolerance of yielding,
+    // where x <= tolerance/(3G) is below what the solve resolves anyway.
+    if (!r.yields && r.best_residual > r.tolerance && !yields_at_rest(r, flow)) return r.result();
+  } else {
+    if (!yields_at_rest(r, flow)) return r.result();
+    r.b = r.fa / three_G;  // x_max
+  }
+  if (!r.fb_known && (r.best.eqps_increment == 0.0 || r.best_residual > r.tolerance)) {
+    const double flow_b = flow(r.b);
+    r.fb = r.flow_below_b - flow_b;
+    r.record(r.b, flow_b, r.fb);
+  }
+  regula_falsi(r, flow);
+  return r.result();
 }
 
 }  // namespace coldspray::materials

@@ -11,6 +11,7 @@
 #include "case/reader.hpp"
 #include "core/error.hpp"
 #include "setups/impact_case.hpp"
+#include "setups/map_file.hpp"
 
 namespace coldspray::setups {
 
@@ -298,11 +299,8 @@ void read_sizes(const case_file::Document& doc, const FileEntry& f, CalibrationF
 }  // namespace
 
 CalibrationFile read_calibration_file(const std::string& path) {
-  const case_file::Document doc = case_file::Document::from_file(path);
+  const case_file::Document doc = read_map_file(path);
   const YAML::Node& root = doc.root();
-  if (!root.IsMap())
-    throw InputError(doc.where(root), "",
-                     "expected a map of keys, got " + case_file::describe(root));
   // grid and fit are read below: grid is a value or a list, fit.transform a pair of words.
   constexpr std::array<std::string_view, 2> kHandHeld{"grid", "fit"};
   FileEntry f;

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/units.hpp"
 #include "setups/impact_case.hpp"
+#include "setups/map_file.hpp"
 
 namespace coldspray::setups {
 
@@ -158,11 +159,8 @@ std::string where_of(const case_file::Document& doc, std::initializer_list<std::
 }  // namespace
 
 DepositFile read_deposit_file(const std::string& path) {
-  const case_file::Document doc = case_file::Document::from_file(path);
+  const case_file::Document doc = read_map_file(path);
   const YAML::Node& root = doc.root();
-  if (!root.IsMap())
-    throw InputError(doc.where(root), "",
-                     "expected a map of keys, got " + case_file::describe(root));
   FileEntry f;
   case_file::Reader::read(doc, root, "", f);
 
