@@ -197,8 +197,8 @@ State build_state(const case_file::Case& c) {
   add_ghosts(s);
   refresh_neighbours(s);
   s.families = build_families(N, s.bodies, horizons);
-  s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
-                      s.families.bonds()};
+  s.discretisation = {"peridynamics", "horizon",
+                      *std::min_element(horizons.begin(), horizons.end()), s.families.bonds()};
   s.family_size.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     s.family_size[i] = static_cast<std::uint32_t>(s.families.begin[i + 1] - s.families.begin[i]);
