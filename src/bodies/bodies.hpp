@@ -77,9 +77,11 @@ void raise_recorded_fault(const Bodies& s);
 
 // Which solver moves the bodies, and its discretisation, for the summary.
 struct Discretisation {
-  std::string method;     // "mpm" or "peridynamics"
-  double length = 0.0;    // the MPM's cell size, or the smallest PD horizon, m
-  std::size_t bonds = 0;  // PD: neighbour pairs in the families (each counted from both ends)
+  std::string method;       // "mpm" or "peridynamics"
+  std::string length_name;  // the length's name in summary.json: "cell_size" or "horizon"
+  double length = 0.0;      // the MPM's cell size, or the smallest PD horizon, m
+  // PD only: neighbour pairs in the families (each counted from both ends).
+  std::optional<std::size_t> bonds;
 };
 
 struct Bodies {

@@ -188,7 +188,7 @@ State build_state(const case_file::Case& c) {
                         seeded);
   check_inside_grid(c, seeded, s.layout);
   bodies::lay_out_bodies(c, seeded, s);
-  s.discretisation = {"mpm", c.grid->cell_size, 0};
+  s.discretisation = {"mpm", "cell_size", c.grid->cell_size, std::nullopt};
   const std::size_t total = s.points.size();
   const Points& P = s.points;
 

@@ -276,8 +276,8 @@ State build_state(const case_file::Case& c) {
   add_ghosts(s);
   refresh_neighbours(s);
   s.families = build_families(s.neighbours, s.bodies, horizons);
-  s.discretisation = {"peridynamics", *std::min_element(horizons.begin(), horizons.end()),
-                      s.families.bonds()};
+  s.discretisation = {"peridynamics", "horizon",
+                      *std::min_element(horizons.begin(), horizons.end()), s.families.bonds()};
   init_family_arrays(c, s);
   hold_faces(c, seeded, s);
   set_up_contact(c, s);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "metrics/body_metrics.hpp"
@@ -33,5 +34,9 @@ struct Summary {
 };
 
 void write_summary_json(const Summary& s, const std::filesystem::path& path);
+
+// summary.json's fields as dotted names ("energy.kinetic", "bodies.<name>.mass") with their
+// units, in written order: docs/outputs.md's table lists the same (tests/run/summary_fields_test).
+std::vector<std::pair<std::string, std::string>> summary_field_units();
 
 }  // namespace coldspray::run
