@@ -240,19 +240,23 @@ nlohmann::json fit_json(const LogisticFit& f) {
           {"cost", f.cost}};
 }
 
-}  // namespace
+// The parameter rectangle [lo1, hi1] x [lo2, hi2] of the plan's two axes.
+struct Rectangle {
+  double lo1, hi1, lo2, hi2;
+};
 
-std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const fs::path& out_dir,
-                                            const std::string& name) {
+Rectangle parameter_rectangle(const CalibrationPlan& plan) {
+  return {std::min(plan.x1.from, plan.x1.to), std::max(plan.x1.from, plan.x1.to),
+          std::min(plan.x2.from, plan.x2.to), std::max(plan.x2.from, plan.x2.to)};
+}
+
+using SamplesBySize = std::vector<std::vector<std::vector<Sample>>>;  // [grid][size]
+
+// Classify: each run's result bonded (1), not bonded (0) or left out, counted per grid and size,
+// its samples gathered for the fit and its row written to runs.csv.
+void classify_runs(const CalibrationPlan& plan, const fs::path& out_dir,
+                   std::vector<GridResult>& results, SamplesBySize& samples) {
   const std::vector<CalibrationRun> runs = calibration_runs(plan, out_dir);
-  std::vector<GridResult> results(plan.grids.size());
-  std::vector<std::vector<std::vector<Sample>>> samples(
-      plan.grids.size(), std::vector<std::vector<Sample>>(plan.sizes.size()));
-  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
-    results[g].grid = plan.grids[g];
-    results[g].sizes.resize(plan.sizes.size());
-  }
-
   io::write_atomically(out_dir / "runs.csv", [&](std::ostream& out) {
     out << "grid,size,diameter_um,velocity_ms," << plan.x1.key << "," << plan.x2.key
         << ",status,outcome,separation_speed,margin,cor,abp,pbcp,v_rest,y\n";
@@ -277,127 +281,158 @@ std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const f
           << (y == kLeftOut ? std::string("") : std::to_string(y)) << "\n";
     }
   });
+}
 
-  const double lo1 = std::min(plan.x1.from, plan.x1.to), hi1 = std::max(plan.x1.from, plan.x1.to);
-  const double lo2 = std::min(plan.x2.from, plan.x2.to), hi2 = std::max(plan.x2.from, plan.x2.to);
-  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
-    GridResult& gr = results[g];
-    std::vector<Boundary> boundaries(plan.sizes.size());
-    for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
-      SizeResult& r = gr.sizes[s];
-      if (r.bonded == 0 || r.not_bonded == 0) {
-        const bool by_verdict = plan.sizes[s].classify.by == Classification::By::Verdict;
-        r.diagnosis = fmt::format(
-            "one class only ({} bonded, {} not bonded{}{}): no boundary; widen the parameter "
-            "rectangle or {} ({})",
-            r.bonded, r.not_bonded, r.undecided ? fmt::format(", {} undecided", r.undecided) : "",
-            r.failed ? fmt::format(", {} failed", r.failed) : "",
-            by_verdict ? "let undecided runs go on longer (end_time, metrics.verdict_extensions)"
-                       : "adjust the tolerances",
-            describe(plan.sizes[s].classify));
-        continue;
-      }
-      try {
-        r.fit = fit_logistic(samples[g][s], plan.fit);
-        boundaries[s] = decision_boundary(*r.fit, lo1, hi1, lo2, hi2);
-      } catch (const std::exception& e) {
-        r.fit.reset();
-        r.diagnosis = std::string("fit failed: ") + e.what();
-        continue;
-      }
-      r.boundary_curves = boundaries[s].curves.size();
-      r.boundary_file =
-          plan.grids.size() == 1
-              ? fmt::format("boundary_{}.csv", plan.sizes[s].label())
-              : fmt::format("boundary_{}_{}.csv", grid_label(plan.grids[g]), plan.sizes[s].label());
-      write_boundary_csv(out_dir / r.boundary_file, boundaries[s]);
-      if (r.boundary_curves == 0)
-        r.diagnosis = "the boundary Z = 0 does not cross the parameter rectangle";
-    }
-    if (plan.sizes.size() < 2) {
-      gr.diagnosis = "one size: no second boundary to intersect";
-      continue;
-    }
-    if (!gr.sizes[0].fit || !gr.sizes[1].fit || gr.sizes[0].boundary_curves == 0 ||
-        gr.sizes[1].boundary_curves == 0) {
-      gr.diagnosis = "no intersection: a size has no boundary in the rectangle (see its diagnosis)";
-      continue;
-    }
-    const std::vector<Intersection> points = intersect_boundaries(boundaries[0], boundaries[1]);
-    for (const Intersection& p : points) gr.intersections.push_back({p.point[0], p.point[1]});
-    const PlaneGrid& frame = boundaries[0].grid;
-    const Eigen::Vector2d centre =
-        frame.from_plot(0.5 * (frame.to_plot({lo1, lo2}) + frame.to_plot({hi1, hi2})));
-    gr.closest = closest_approach(boundaries[0].curves, boundaries[1].curves, frame);
-    if (const auto nearest = nearest_intersection(points, centre, frame)) {
-      gr.calibrated = std::array<double, 2>{nearest->point[0], nearest->point[1]};
-    } else if (gr.closest) {
-      gr.calibrated = std::array<double, 2>{gr.closest->midpoint[0], gr.closest->midpoint[1]};
-      gr.diagnosis = fmt::format(
-          "no intersection: the two sizes' boundaries do not cross inside the parameter "
-          "rectangle; they come within {:.3g} of its width, and the calibrated pair is the "
-          "midpoint of that closest approach, a compromise",
-          gr.closest->distance);
-    }
+// Fit: one size's logistic regression and its decision boundary Z = 0 in the rectangle, written
+// to its boundary CSV; a size with one class only, or whose fit fails, gets its diagnosis.
+void fit_size(const CalibrationPlan& plan, std::size_t g, std::size_t s,
+              const std::vector<Sample>& size_samples, const Rectangle& box,
+              const fs::path& out_dir, SizeResult& r, Boundary& boundary) {
+  if (r.bonded == 0 || r.not_bonded == 0) {
+    const bool by_verdict = plan.sizes[s].classify.by == Classification::By::Verdict;
+    r.diagnosis = fmt::format(
+        "one class only ({} bonded, {} not bonded{}{}): no boundary; widen the parameter "
+        "rectangle or {} ({})",
+        r.bonded, r.not_bonded, r.undecided ? fmt::format(", {} undecided", r.undecided) : "",
+        r.failed ? fmt::format(", {} failed", r.failed) : "",
+        by_verdict ? "let undecided runs go on longer (end_time, metrics.verdict_extensions)"
+                   : "adjust the tolerances",
+        describe(plan.sizes[s].classify));
+    return;
   }
+  try {
+    r.fit = fit_logistic(size_samples, plan.fit);
+    boundary = decision_boundary(*r.fit, box.lo1, box.hi1, box.lo2, box.hi2);
+  } catch (const std::exception& e) {
+    r.fit.reset();
+    r.diagnosis = std::string("fit failed: ") + e.what();
+    return;
+  }
+  r.boundary_curves = boundary.curves.size();
+  r.boundary_file =
+      plan.grids.size() == 1
+          ? fmt::format("boundary_{}.csv", plan.sizes[s].label())
+          : fmt::format("boundary_{}_{}.csv", grid_label(plan.grids[g]), plan.sizes[s].label());
+  write_boundary_csv(out_dir / r.boundary_file, boundary);
+  if (r.boundary_curves == 0)
+    r.diagnosis = "the boundary Z = 0 does not cross the parameter rectangle";
+}
 
+// Intersect: the calibrated pair where the two sizes' boundaries cross nearest the rectangle's
+// centre, or else the midpoint of their closest approach.
+void intersect_sizes(const CalibrationPlan& plan, const std::vector<Boundary>& boundaries,
+                     const Rectangle& box, GridResult& gr) {
+  if (plan.sizes.size() < 2) {
+    gr.diagnosis = "one size: no second boundary to intersect";
+    return;
+  }
+  if (!gr.sizes[0].fit || !gr.sizes[1].fit || gr.sizes[0].boundary_curves == 0 ||
+      gr.sizes[1].boundary_curves == 0) {
+    gr.diagnosis = "no intersection: a size has no boundary in the rectangle (see its diagnosis)";
+    return;
+  }
+  const std::vector<Intersection> points = intersect_boundaries(boundaries[0], boundaries[1]);
+  for (const Intersection& p : points) gr.intersections.push_back({p.point[0], p.point[1]});
+  const PlaneGrid& frame = boundaries[0].grid;
+  const Eigen::Vector2d centre = frame.from_plot(
+      0.5 * (frame.to_plot({box.lo1, box.lo2}) + frame.to_plot({box.hi1, box.hi2})));
+  gr.closest = closest_approach(boundaries[0].curves, boundaries[1].curves, frame);
+  if (const auto nearest = nearest_intersection(points, centre, frame)) {
+    gr.calibrated = std::array<double, 2>{nearest->point[0], nearest->point[1]};
+  } else if (gr.closest) {
+    gr.calibrated = std::array<double, 2>{gr.closest->midpoint[0], gr.closest->midpoint[1]};
+    gr.diagnosis = fmt::format(
+        "no intersection: the two sizes' boundaries do not cross inside the parameter "
+        "rectangle; they come within {:.3g} of its width, and the calibrated pair is the "
+        "midpoint of that closest approach, a compromise",
+        gr.closest->distance);
+  }
+}
+
+nlohmann::json axis_json(const ParameterAxis& a) {
+  return nlohmann::json{{"key", a.key},
+                        {"unit", a.unit},
+                        {"from", a.from},
+                        {"to", a.to},
+                        {"count", a.count},
+                        {"spacing", a.log ? "log" : "linear"},
+                        {"values", parameter_values(a)}};
+}
+
+nlohmann::json size_json(const CalibrationSize& size, const SizeResult& r) {
+  return nlohmann::json{
+      {"size", size.label()},
+      {"diameter_um", size.diameter * 1e6},
+      {"velocity_ms", size.velocity},
+      {"classify", classification_json(size.classify)},
+      {"runs", r.runs},
+      {"bonded", r.bonded},
+      {"not_bonded", r.not_bonded},
+      {"undecided", r.undecided},
+      {"failed", r.failed},
+      {"fit", r.fit ? fit_json(*r.fit) : nlohmann::json()},
+      {"boundary_csv",
+       r.boundary_file.empty() ? nlohmann::json() : nlohmann::json(r.boundary_file)},
+      {"diagnosis", r.diagnosis.empty() ? nlohmann::json() : nlohmann::json(r.diagnosis)}};
+}
+
+nlohmann::json grid_json(const CalibrationPlan& plan, const GridResult& gr) {
+  nlohmann::json gj = {{"grid", gr.grid}, {"sizes", nlohmann::json::array()}};
+  for (std::size_t s = 0; s < plan.sizes.size(); ++s)
+    gj["sizes"].push_back(size_json(plan.sizes[s], gr.sizes[s]));
+  gj["intersections"] = nlohmann::json::array();
+  for (const auto& p : gr.intersections)
+    gj["intersections"].push_back({{plan.x1.key, p[0]}, {plan.x2.key, p[1]}});
+  gj["calibrated"] = gr.calibrated ? nlohmann::json{{plan.x1.key, (*gr.calibrated)[0]},
+                                                    {plan.x2.key, (*gr.calibrated)[1]}}
+                                   : nlohmann::json();
+  const auto point_json = [&plan](const Eigen::Vector2d& x) {
+    return nlohmann::json{{plan.x1.key, x[0]}, {plan.x2.key, x[1]}};
+  };
+  gj["closest_approach"] =
+      gr.closest ? nlohmann::json{{"on_" + plan.sizes[0].label(), point_json(gr.closest->on_a)},
+                                  {"on_" + plan.sizes[1].label(), point_json(gr.closest->on_b)},
+                                  {"distance", gr.closest->distance}}
+                 : nlohmann::json();
+  gj["calibrated_by"] = !gr.calibrated             ? nlohmann::json()
+                        : gr.intersections.empty() ? nlohmann::json("closest approach")
+                                                   : nlohmann::json("intersection");
+  gj["diagnosis"] = gr.diagnosis.empty() ? nlohmann::json() : nlohmann::json(gr.diagnosis);
+  return gj;
+}
+
+// Write: calibration.json, the plan's axes and fit options and each grid's sizes and result.
+void write_calibration_json(const CalibrationPlan& plan, const std::vector<GridResult>& results,
+                            const fs::path& out_dir, const std::string& name) {
   nlohmann::json j;
   j["name"] = name;
-  auto axis_json = [](const ParameterAxis& a) {
-    return nlohmann::json{{"key", a.key},
-                          {"unit", a.unit},
-                          {"from", a.from},
-                          {"to", a.to},
-                          {"count", a.count},
-                          {"spacing", a.log ? "log" : "linear"},
-                          {"values", parameter_values(a)}};
-  };
   j["parameters"] = {{"x1", axis_json(plan.x1)}, {"x2", axis_json(plan.x2)}};
   j["fit_options"] = {{"ridge", plan.fit.ridge}, {"degree", plan.fit.degree}};
   j["grids"] = nlohmann::json::array();
-  for (const GridResult& gr : results) {
-    nlohmann::json gj = {{"grid", gr.grid}, {"sizes", nlohmann::json::array()}};
-    for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
-      const SizeResult& r = gr.sizes[s];
-      const CalibrationSize& size = plan.sizes[s];
-      nlohmann::json sj = {
-          {"size", size.label()},
-          {"diameter_um", size.diameter * 1e6},
-          {"velocity_ms", size.velocity},
-          {"classify", classification_json(size.classify)},
-          {"runs", r.runs},
-          {"bonded", r.bonded},
-          {"not_bonded", r.not_bonded},
-          {"undecided", r.undecided},
-          {"failed", r.failed},
-          {"fit", r.fit ? fit_json(*r.fit) : nlohmann::json()},
-          {"boundary_csv",
-           r.boundary_file.empty() ? nlohmann::json() : nlohmann::json(r.boundary_file)},
-          {"diagnosis", r.diagnosis.empty() ? nlohmann::json() : nlohmann::json(r.diagnosis)}};
-      gj["sizes"].push_back(sj);
-    }
-    gj["intersections"] = nlohmann::json::array();
-    for (const auto& p : gr.intersections)
-      gj["intersections"].push_back({{plan.x1.key, p[0]}, {plan.x2.key, p[1]}});
-    gj["calibrated"] = gr.calibrated ? nlohmann::json{{plan.x1.key, (*gr.calibrated)[0]},
-                                                      {plan.x2.key, (*gr.calibrated)[1]}}
-                                     : nlohmann::json();
-    const auto point_json = [&plan](const Eigen::Vector2d& x) {
-      return nlohmann::json{{plan.x1.key, x[0]}, {plan.x2.key, x[1]}};
-    };
-    gj["closest_approach"] =
-        gr.closest ? nlohmann::json{{"on_" + plan.sizes[0].label(), point_json(gr.closest->on_a)},
-                                    {"on_" + plan.sizes[1].label(), point_json(gr.closest->on_b)},
-                                    {"distance", gr.closest->distance}}
-                   : nlohmann::json();
-    gj["calibrated_by"] = !gr.calibrated             ? nlohmann::json()
-                          : gr.intersections.empty() ? nlohmann::json("closest approach")
-                                                     : nlohmann::json("intersection");
-    gj["diagnosis"] = gr.diagnosis.empty() ? nlohmann::json() : nlohmann::json(gr.diagnosis);
-    j["grids"].push_back(gj);
-  }
+  for (const GridResult& gr : results) j["grids"].push_back(grid_json(plan, gr));
   io::write_atomically(out_dir / "calibration.json",
                        [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+}  // namespace
+
+std::vector<GridResult> analyse_calibration(const CalibrationPlan& plan, const fs::path& out_dir,
+                                            const std::string& name) {
+  std::vector<GridResult> results(plan.grids.size());
+  SamplesBySize samples(plan.grids.size(), std::vector<std::vector<Sample>>(plan.sizes.size()));
+  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
+    results[g].grid = plan.grids[g];
+    results[g].sizes.resize(plan.sizes.size());
+  }
+  classify_runs(plan, out_dir, results, samples);
+  const Rectangle box = parameter_rectangle(plan);
+  for (std::size_t g = 0; g < plan.grids.size(); ++g) {
+    std::vector<Boundary> boundaries(plan.sizes.size());
+    for (std::size_t s = 0; s < plan.sizes.size(); ++s)
+      fit_size(plan, g, s, samples[g][s], box, out_dir, results[g].sizes[s], boundaries[s]);
+    intersect_sizes(plan, boundaries, box, results[g]);
+  }
+  write_calibration_json(plan, results, out_dir, name);
   return results;
 }
 
