@@ -302,6 +302,71 @@ void append_header(std::string& y, const ImpactSpec& spec, const std::string& su
         "of the grid), where the solver cuts the bodies.");
 }
 
+// The MPM impact's grid (a quarter's box and roller faces on its symmetry planes), its solver
+// settings and the thesis' contact normal.
+void append_grid_and_solver(std::string& y, const ImpactSpec& spec, const SubstrateSize& substrate,
+                            bool quarter) {
+  auto line = [&y](const std::string& text) { y += text + "\n"; };
+  line("grid:");
+  line("  cell_size: " + um(spec.cell_size));
+  if (quarter) {
+    const QuarterGrid q = quarter_grid(spec.diameter, substrate, spec.cell_size);
+    line("  min: " + vector_um(q.min));
+    line("  max: " + vector_um(q.max));
+    line("  faces: {xmin: roller, ymin: roller}   # the symmetry planes");
+  }
+  line("solver:");
+  line(std::string("  geometry: ") +
+       (spec.geometry == case_file::Geometry::Axisymmetric ? "axisymmetric" : "3d"));
+  line("  shape_function: " + spec.shape_function);
+  line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));
+  line("contact:");
+  line("  normal: body:substrate   # the thesis' choice in all its tests (§3.5.4)");
+}
+
+// Which option set each generated key of the MPM impact, for errors located at the option.
+std::vector<case_file::ValueOrigin> mpm_origins(const ImpactSpec& spec) {
+  std::vector<case_file::ValueOrigin> origins = {
+      {"bodies.particle.material", "--material"},
+      {"bodies.substrate.material",
+       spec.substrate_material.empty() ? "--material" : "--substrate-material"},
+      {"bodies.particle.shape", "--diameter"},
+      {"bodies.substrate.shape", "--diameter"},
+      {"bodies.particle.velocity", "--velocity"},
+      {"bodies.particle.spacing", "--grid"},
+      {"bodies.substrate.spacing", "--grid"},
+      {"grid.cell_size", "--grid"},
+      {"solver.geometry", "--geometry"},
+      {"solver.shape_function", "--shape-function"},
+      {"solver.end_time", "--end-time"},
+      {"bonding.model", "--bonding"}};
+  if (spec.coarsening > 0) origins.push_back({"bodies.substrate.coarsening", "--coarsening"});
+  return origins;
+}
+
+// The bonding section: the model and the parameters the options gave.
+void append_bonding(std::string& y, const ImpactSpec& spec,
+                    std::vector<case_file::ValueOrigin>& origins) {
+  auto line = [&y](const std::string& text) { y += text + "\n"; };
+  line("bonding:");
+  line("  model: " + spec.bonding);
+  // Parameters not given keep the schema's defaults (the thesis' calibration, §5.1.4), so a
+  // new calibration in the schema reaches generated cases too.
+  auto parameter = [&line, &origins](const char* key, const char* option, const std::string& text) {
+    line(fmt::format("  {}: {}", key, text));
+    origins.push_back({fmt::format("bonding.{}", key), option});
+  };
+  if (spec.critical_energy)
+    parameter("critical_energy", "--Gc", number(*spec.critical_energy) + " J/m^2");
+  if (spec.critical_energy_rate)
+    parameter("critical_energy_rate", "--Gc-rate",
+              number(*spec.critical_energy_rate * 1e-6) + " J/m^2/us");
+  if (spec.critical_strain) parameter("critical_strain", "--eps-c", number(*spec.critical_strain));
+  if (spec.critical_strain_rate)
+    parameter("critical_strain_rate", "--eps-c-rate", number(*spec.critical_strain_rate) + " 1/s");
+  if (spec.floor) parameter("floor", "--floor", number(*spec.floor));
+}
+
 }  // namespace
 
 GeneratedCase impact_case(const ImpactSpec& spec) {
@@ -333,51 +398,9 @@ GeneratedCase impact_case(const ImpactSpec& spec) {
   append_bodies(y, spec, substrate_material, 0.5 * substrate.diameter, substrate.height);
   line("    absorbing: [bottom, side]   # a semi-infinite substrate (thesis §3.5.5)");
   if (spec.coarsening > 0) append_coarsening(y, spec, substrate);
-  line("grid:");
-  line("  cell_size: " + um(spec.cell_size));
-  if (quarter) {
-    const QuarterGrid q = quarter_grid(spec.diameter, substrate, spec.cell_size);
-    line("  min: " + vector_um(q.min));
-    line("  max: " + vector_um(q.max));
-    line("  faces: {xmin: roller, ymin: roller}   # the symmetry planes");
-  }
-  line("solver:");
-  line(std::string("  geometry: ") + (axisymmetric ? "axisymmetric" : "3d"));
-  line("  shape_function: " + spec.shape_function);
-  line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));
-  line("contact:");
-  line("  normal: body:substrate   # the thesis' choice in all its tests (§3.5.4)");
-  line("bonding:");
-  line("  model: " + spec.bonding);
-  g.origins = {{"bodies.particle.material", "--material"},
-               {"bodies.substrate.material",
-                spec.substrate_material.empty() ? "--material" : "--substrate-material"},
-               {"bodies.particle.shape", "--diameter"},
-               {"bodies.substrate.shape", "--diameter"},
-               {"bodies.particle.velocity", "--velocity"},
-               {"bodies.particle.spacing", "--grid"},
-               {"bodies.substrate.spacing", "--grid"},
-               {"grid.cell_size", "--grid"},
-               {"solver.geometry", "--geometry"},
-               {"solver.shape_function", "--shape-function"},
-               {"solver.end_time", "--end-time"},
-               {"bonding.model", "--bonding"}};
-  if (spec.coarsening > 0) g.origins.push_back({"bodies.substrate.coarsening", "--coarsening"});
-  // Parameters not given keep the schema's defaults (the thesis' calibration, §5.1.4), so a
-  // new calibration in the schema reaches generated cases too.
-  auto parameter = [&](const char* key, const char* option, const std::string& text) {
-    line(fmt::format("  {}: {}", key, text));
-    g.origins.push_back({fmt::format("bonding.{}", key), option});
-  };
-  if (spec.critical_energy)
-    parameter("critical_energy", "--Gc", number(*spec.critical_energy) + " J/m^2");
-  if (spec.critical_energy_rate)
-    parameter("critical_energy_rate", "--Gc-rate",
-              number(*spec.critical_energy_rate * 1e-6) + " J/m^2/us");
-  if (spec.critical_strain) parameter("critical_strain", "--eps-c", number(*spec.critical_strain));
-  if (spec.critical_strain_rate)
-    parameter("critical_strain_rate", "--eps-c-rate", number(*spec.critical_strain_rate) + " 1/s");
-  if (spec.floor) parameter("floor", "--floor", number(*spec.floor));
+  append_grid_and_solver(y, spec, substrate, quarter);
+  g.origins = mpm_origins(spec);
+  append_bonding(y, spec, g.origins);
   if (spec.verdict_window > 0.0) {
     line("metrics:");
     line(fmt::format("  verdict_window: {} ns", number(spec.verdict_window * 1e9)));
