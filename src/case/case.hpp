@@ -89,14 +89,43 @@ struct Solver {
 
 enum class ContactNormal { MaxGradient, Body, HighestId, AverageGradient };
 
+// The grid contact of the MPM (thesis §3.3, docs/mpm.md "Contact"): the normal's rule at a node
+// two bodies share, Coulomb friction and the surface-gap check. (`contact.mpm` in a case file.)
+struct MpmContact {
+  ContactNormal normal = ContactNormal::MaxGradient;
+  std::string normal_body;  // with ContactNormal::Body
+  // With ContactNormal::Body, the rule at pairs of other bodies (not Body): the thesis' MVG, or
+  // for many particles on a substrate the average gradient between particles.
+  ContactNormal other_pairs_normal = ContactNormal::MaxGradient;
+  double friction = 0.0;  // Coulomb coefficient; 0 = frictionless
+  // Also require the bodies' surfaces, from their points' extents, to meet at the node.
+  bool gap_check = true;
+
+  friend bool operator==(const MpmContact&, const MpmContact&) = default;
+};
+
 // The force law between points of different bodies in peridynamics (docs/pd.md, "Contact"): the
-// short-range repulsion (its constants under `peridynamics`), the PD paper's contact model 1,
-// a Lennard-Jones-type potential (eqs 15-22), or its model 2, interface bonds with the bulk's
-// softening force-stretch law (eqs 23-25). The MPM's grid contact has no law to choose.
+// short-range repulsion, the PD paper's contact model 1, a Lennard-Jones-type potential
+// (eqs 15-22), or its model 2, interface bonds with the bulk's softening force-stretch law
+// (eqs 23-25).
 enum class ContactModel { Repulsive, LennardJones, InterfaceBonds };
 
-struct Contact {
+// Points of different bodies repel with the short-range force of stiffness x the micromodulus
+// once closer than d = min(distance x the finer spacing, initial_fraction x their distance at
+// t = 0): LAMMPS's PERI package, d = min(0.9 |X_i - X_j|, 1.35 lattice constants) and 15 (Parks
+// et al. 2008, after Silling's EMU manual). Model 2's bonds take d as their rest length.
+struct Repulsion {
+  double distance = 1.35;  // in spacings
+  double initial_fraction = 0.9;
+  double stiffness = 15.0;  // in micromoduli
+
+  friend bool operator==(const Repulsion&, const Repulsion&) = default;
+};
+
+// Peridynamics' contact between bodies. (`contact.peridynamics` in a case file.)
+struct PeridynamicsContact {
   ContactModel model = ContactModel::Repulsive;
+  Repulsion repulsion;
   // Contact model 1 (PD paper eqs 15-22): phi = alpha [(r0/r)^m - 2 beta (r0/r)^n], cut off at
   // cutoff x r0. r0 is "a little larger than the node spacing" (the paper); ours is 1.1 of the
   // finer spacing of the pair of bodies. alpha, unset, follows from the bulk modulus (eq 22).
@@ -113,14 +142,15 @@ struct Contact {
   std::optional<double> fracture_energy;
   std::optional<double> yield_stretch;  // s_y
   std::optional<double> softening;      // m
-  ContactNormal normal = ContactNormal::MaxGradient;
-  std::string normal_body;  // with ContactNormal::Body
-  // With ContactNormal::Body, the rule at pairs of other bodies (not Body): the thesis' MVG, or
-  // for many particles on a substrate the average gradient between particles.
-  ContactNormal other_pairs_normal = ContactNormal::MaxGradient;
-  double friction = 0.0;  // Coulomb coefficient; 0 = frictionless
-  // Also require the bodies' surfaces, from their points' extents, to meet at the node.
-  bool gap_check = true;
+
+  friend bool operator==(const PeridynamicsContact&, const PeridynamicsContact&) = default;
+};
+
+// Contact between bodies, each solver's under its own key (docs/input-reference.md, "contact");
+// the keys before the split are moved to these when read (case/moved_keys.hpp).
+struct Contact {
+  MpmContact mpm;
+  PeridynamicsContact peridynamics;
 
   friend bool operator==(const Contact&, const Contact&) = default;
 };
@@ -205,13 +235,6 @@ struct Peridynamics {
   // bond's deformation, in units of the bond micromodulus 18 K / (pi delta^4).
   double stabilization = 0.1;
   ControlStiffness control_stiffness = ControlStiffness::Elastic;
-  // Points of different bodies repel with the short-range force of contact_stiffness x the
-  // micromodulus once closer than d = min(contact_distance x the finer spacing,
-  // contact_initial_fraction x their distance at t = 0): LAMMPS's PERI package, d = min(0.9
-  // |X_i - X_j|, 1.35 lattice constants) and 15 (Parks et al. 2008, after Silling's EMU manual).
-  double contact_distance = 1.35;
-  double contact_initial_fraction = 0.9;
-  double contact_stiffness = 15.0;
   // Bodies whose stable step is shorter than the largest body's take several steps of their own
   // per step of it (pd/stepper.hpp, docs/pd.md "Subcycling"): bodies share no bonds, only contact.
   bool subcycling = false;

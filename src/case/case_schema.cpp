@@ -6,7 +6,7 @@ namespace {
 constexpr std::string_view kBodyPrefix = "body:";
 }
 
-void ContactNormalText::parse(std::string_view text, Contact& contact) const {
+void ContactNormalText::parse(std::string_view text, MpmContact& contact) const {
   if (text == "max-gradient") {
     contact.normal = ContactNormal::MaxGradient;
     contact.normal_body.clear();
@@ -26,7 +26,7 @@ void ContactNormalText::parse(std::string_view text, Contact& contact) const {
   }
 }
 
-std::string ContactNormalText::format(const Contact& contact) const {
+std::string ContactNormalText::format(const MpmContact& contact) const {
   switch (contact.normal) {
     case ContactNormal::MaxGradient:
       return "max-gradient";

@@ -71,12 +71,12 @@ inline constexpr std::array<std::string_view, 14> kProbeFields{
     "pressure", "von_mises", "density",  "temperature", "eqps",       "sigma_xx",   "sigma_yy",
     "sigma_zz", "sigma_xy",  "sigma_yz", "sigma_xz",    "velocity_x", "velocity_y", "velocity_z"};
 
-// contact.normal: "max-gradient", "average-gradient", "highest-id" or "body:NAME"; sets normal
+// contact.mpm.normal: "max-gradient", "average-gradient", "highest-id" or "body:NAME"; sets normal
 // and normal_body.
 struct ContactNormalText {
   std::string expected() const { return "max-gradient, average-gradient, highest-id or body:NAME"; }
-  void parse(std::string_view text, Contact& contact) const;
-  std::string format(const Contact& contact) const;
+  void parse(std::string_view text, MpmContact& contact) const;
+  std::string format(const MpmContact& contact) const;
 };
 
 // A case name names the default output folder.
@@ -156,8 +156,25 @@ void fields(IO& io, Solver& s) {
 }
 
 template <class IO>
-void fields(IO& io, Contact& c) {
+void fields(IO& io, MpmContact& c) {
+  io.scalar("normal", c, ContactNormalText{}, kOptional);
+  io.scalar("other_pairs_normal", c.other_pairs_normal, kOtherPairsNormalNames, kOptional);
+  io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
+  io.scalar("gap_check", c.gap_check, Flag{}, kOptional);
+}
+
+template <class IO>
+void fields(IO& io, Repulsion& r) {
+  io.quantity("distance", r.distance, units::kDimensionless, kOptional,
+              Range{0.0, 3.0, true, false});
+  io.quantity("initial_fraction", r.initial_fraction, units::kDimensionless, kOptional, kFraction);
+  io.quantity("stiffness", r.stiffness, units::kDimensionless, kOptional, kNonNegative);
+}
+
+template <class IO>
+void fields(IO& io, PeridynamicsContact& c) {
   io.scalar("model", c.model, kContactModelNames, kOptional);
+  io.section("repulsion", c.repulsion, kOptional);
   io.quantity("beta", c.beta, units::kDimensionless, kOptional, Range{0.0, 1.0, true, true});
   io.quantity("r0", c.r0, units::kDimensionless, kOptional, kPositive);
   io.quantity("cutoff", c.cutoff, units::kDimensionless, kOptional,
@@ -173,10 +190,12 @@ void fields(IO& io, Contact& c) {
   io.quantity("yield_stretch", c.yield_stretch, units::kDimensionless, kOptional,
               Range{0.0, 1.0, true, true});
   io.quantity("softening", c.softening, units::kDimensionless, kOptional, kPositive);
-  io.scalar("normal", c, ContactNormalText{}, kOptional);
-  io.scalar("other_pairs_normal", c.other_pairs_normal, kOtherPairsNormalNames, kOptional);
-  io.quantity("friction", c.friction, units::kDimensionless, kOptional, kNonNegative);
-  io.scalar("gap_check", c.gap_check, Flag{}, kOptional);
+}
+
+template <class IO>
+void fields(IO& io, Contact& c) {
+  io.section("mpm", c.mpm, kOptional);
+  io.section("peridynamics", c.peridynamics, kOptional);
 }
 
 template <class IO>
@@ -218,12 +237,6 @@ void fields(IO& io, Peridynamics& p) {
   io.scalar("influence", p.influence, kInfluenceNames, kOptional);
   io.quantity("stabilization", p.stabilization, units::kDimensionless, kOptional, kNonNegative);
   io.scalar("control_stiffness", p.control_stiffness, kControlStiffnessNames, kOptional);
-  io.quantity("contact_distance", p.contact_distance, units::kDimensionless, kOptional,
-              Range{0.0, 3.0, true, false});
-  io.quantity("contact_initial_fraction", p.contact_initial_fraction, units::kDimensionless,
-              kOptional, kFraction);
-  io.quantity("contact_stiffness", p.contact_stiffness, units::kDimensionless, kOptional,
-              kNonNegative);
   io.scalar("subcycling", p.subcycling, Flag{}, kOptional);
 }
 

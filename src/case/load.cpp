@@ -11,6 +11,7 @@
 #include "case/case_schema.hpp"
 #include "case/document.hpp"
 #include "case/key_locations.hpp"
+#include "case/moved_keys.hpp"
 #include "case/overrides.hpp"
 #include "case/reader.hpp"
 #include "case/size_limits.hpp"
@@ -22,7 +23,11 @@ namespace coldspray::case_file {
 namespace {
 
 Case read_case(Document& doc, const std::vector<Override>& overrides) {
+  // Old keys move first, so that a --set of a key the file gives the old way replaces it; and
+  // again after the --set values, for a map one gives with old keys in it.
+  move_old_keys(doc);
   for (const Override& o : overrides) apply_override(doc, o);
+  move_old_keys(doc);
   Case c;
   Reader::read(doc, doc.root(), "", c);
   c.source_file = doc.name();
@@ -37,8 +42,8 @@ Case read_case(Document& doc, const std::vector<Override>& overrides) {
   // depend on the bodies' order is their default (docs/validation/multi-particle.md, "Contact
   // normals"); two bodies keep the thesis' MVG.
   const YAML::Node& contact = std::as_const(doc).root()["contact"];
-  if (c.bodies.size() >= 3 && !(contact && contact["normal"]))
-    c.contact.normal = ContactNormal::AverageGradient;
+  if (c.bodies.size() >= 3 && !(contact && contact["mpm"] && contact["mpm"]["normal"]))
+    c.contact.mpm.normal = ContactNormal::AverageGradient;
   check_consistency(doc, c);
   check_size_limits(doc, c);
   c.key_locations = key_locations(doc);

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <vector>
 
+#include "case/moved_keys.hpp"
 #include "case/plain_yaml.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -60,8 +61,10 @@ Override parse_override(std::string_view text) {
   return {key, value};
 }
 
-void apply_override(Document& doc, const Override& o) {
-  const std::string origin = "--set " + o.key;
+void apply_override(Document& doc, const Override& given) {
+  const std::string origin = "--set " + given.key;
+  // A key that moved sets its new place (case/moved_keys.hpp).
+  const Override o{moved_key(given.key).value_or(given.key), given.value};
   const std::vector<std::string> segments = split_path(o);
   const YAML::Node value = parse_value(o);
   YAML::Node node = doc.root();

@@ -13,18 +13,19 @@ namespace coldspray::case_file {
 namespace {
 
 void check_contact_body(const Document& doc, const Case& c) {
-  if (c.contact.normal != ContactNormal::Body) {
-    if (c.contact.other_pairs_normal != ContactNormal::MaxGradient)
-      fail_at(doc, {"contact", "other_pairs_normal"},
-              "applies with contact.normal: body:NAME only (the pairs without that body)");
+  if (c.contact.mpm.normal != ContactNormal::Body) {
+    if (c.contact.mpm.other_pairs_normal != ContactNormal::MaxGradient)
+      fail_at(doc, {"contact", "mpm", "other_pairs_normal"},
+              "applies with contact.mpm.normal: body:NAME only (the pairs without that body)");
     return;
   }
   std::vector<std::string_view> names;
   for (const Body& b : c.bodies) {
-    if (b.name == c.contact.normal_body) return;
+    if (b.name == c.contact.mpm.normal_body) return;
     names.push_back(b.name);
   }
-  fail_at(doc, {"contact", "normal"}, unknown_word("body", c.contact.normal_body, names));
+  fail_at(doc, {"contact", "mpm", "normal"},
+          unknown_word("body", c.contact.mpm.normal_body, names));
 }
 
 void check_grip_body(const Document& doc, const Case& c) {
@@ -64,8 +65,8 @@ void check_solver_sections(const Document& doc, const Case& c) {
         if (!b.roller.empty())
           fail_at(doc, {"bodies", b.name, "roller"},
                   "is peridynamics only: with solver.method mpm, hold a plane with grid.faces");
-      if (c.contact.model != ContactModel::Repulsive)
-        fail_at(doc, {"contact", "model"},
+      if (c.contact.peridynamics.model != ContactModel::Repulsive)
+        fail_at(doc, {"contact", "peridynamics", "model"},
                 "is peridynamics only: the MPM's grid contact has no force law to choose");
       if (c.solver.cfl > kMaxMpmCfl)
         fail_at(doc, {"solver", "cfl"},

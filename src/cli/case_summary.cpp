@@ -9,6 +9,7 @@
 
 #include "case/size_estimate.hpp"
 #include "geometry/shape.hpp"
+#include "run/solver.hpp"
 
 namespace coldspray::cli {
 
@@ -74,14 +75,9 @@ void print_case_summary(const case_file::Case& c, std::ostream& out) {
         b.coarsening ? "at most " : "", case_file::estimated_points(c, b),
         b.coarsening ? fmt::format(" (coarsened, {} levels)", b.coarsening->levels) : "");
   }
-  if (c.solver.method == case_file::Method::Peridynamics)
-    out << fmt::format("  peridynamics, horizon {:.4g} x spacing\n",
-                       c.peridynamics->horizon_factor);
-  else {
-    const std::array<double, 3> nodes = case_file::estimated_grid_nodes(c);
-    out << fmt::format("  MPM, grid cell {:.4g} {}, ~{:.3g} nodes\n", c.grid->cell_size / u.metres,
-                       u.symbol, nodes[0] * nodes[1] * nodes[2]);
-  }
+  out << run::with_solver(c.solver.method, [&](auto solver) {
+    return describe_discretisation(solver, c, u.metres, u.symbol);
+  });
   const case_file::FirstStep first = case_file::first_time_step(c);
   out << fmt::format("  first time step {:.3g} ns, ~{:.3g} steps\n", first.dt * 1e9,
                      c.solver.end_time / first.dt);

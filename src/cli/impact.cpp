@@ -87,7 +87,7 @@ void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream
   if (v.outcome == metrics::Outcome::Undecided)
     why += fmt::format(", its halves {} apart", speed_text(std::abs(v.settling)));
   why += fmt::format("; bonded area {:.3g} um^2", v.bonded_area * 1e12);
-  if (c.contact.model != case_file::ContactModel::Repulsive)
+  if (c.contact.peridynamics.model != case_file::ContactModel::Repulsive)
     why = "the adhesive contact's hold: the bonded area is the particle's points it holds; " + why;
   else if (c.bonding.model == case_file::BondingModel::None)
     why = "bonding model none: nothing bonds; " + why;

@@ -118,7 +118,7 @@ class ContactNodes {
 struct ContactRule {
   case_file::ContactNormal normal = case_file::ContactNormal::MaxGradient;
   int normal_body = -1;  // with ContactNormal::Body
-  // With ContactNormal::Body, the rule at pairs without normal_body (case_file::Contact).
+  // With ContactNormal::Body, the rule at pairs without normal_body (case_file::MpmContact).
   case_file::ContactNormal other_pairs = case_file::ContactNormal::MaxGradient;
   std::vector<double> reference_density;  // per body: MVG compares volume gradients
   double friction = 0.0;

@@ -221,10 +221,10 @@ State build_state(const case_file::Case& c) {
   // Sized here so that steps allocate only if the thread count changes between them.
   s.stress_shares.prepare(omp_get_max_threads(), stress_batch_count(s));
 
-  s.contact_rule.normal = c.contact.normal;
-  s.contact_rule.other_pairs = c.contact.other_pairs_normal;
-  s.contact_rule.friction = c.contact.friction;
-  s.contact_rule.gap_check = c.contact.gap_check;
+  s.contact_rule.normal = c.contact.mpm.normal;
+  s.contact_rule.other_pairs = c.contact.mpm.other_pairs_normal;
+  s.contact_rule.friction = c.contact.mpm.friction;
+  s.contact_rule.gap_check = c.contact.mpm.gap_check;
   s.bond_law = bonding::BondLaw::from_case(c.bonding, c.grid->cell_size);
   s.bonding = s.bond_law.enabled();
   s.contact_rule.bonding = s.bonding;
@@ -234,8 +234,8 @@ State build_state(const case_file::Case& c) {
   s.contact_rule.debond = bonding::CohesiveLaw::from_case(c.bonding);
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     s.contact_rule.reference_density.push_back(s.bodies[b].material.density);
-    if (c.contact.normal == case_file::ContactNormal::Body &&
-        c.bodies[b].name == c.contact.normal_body)
+    if (c.contact.mpm.normal == case_file::ContactNormal::Body &&
+        c.bodies[b].name == c.contact.mpm.normal_body)
       s.contact_rule.normal_body = static_cast<int>(b);
   }
   s.contact_result.gradient_weight.assign(c.bodies.size() * c.bodies.size(), 0.0);

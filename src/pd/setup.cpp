@@ -65,15 +65,16 @@ void invert_moments(const case_file::Case& c, State& s) {
 // the bulk-fracture test (pd/bulk_fracture.hpp), which is in units of s_c.
 InterfaceBondLaw interface_bond_law(const case_file::Case& c, const State& s, std::size_t a,
                                     std::size_t b, double K, double delta) {
-  const case_file::Contact& contact = c.contact;
+  const case_file::PeridynamicsContact& contact = c.contact.peridynamics;
   const double gamma_a = s.bodies[a].material.surface_energy;
   const double gamma_b = s.bodies[b].material.surface_energy;
   if (!contact.fracture_energy && (gamma_a <= 0.0 || gamma_b <= 0.0))
-    case_file::fail_at(c, "contact.fracture_energy",
-                       fmt::format("contact model 2 needs the interface's fracture energy: give "
-                                   "contact.fracture_energy, or a surface_energy to materials "
-                                   "'{}' and '{}' (then G_c = gamma_a + gamma_b)",
-                                   s.bodies[a].material.name, s.bodies[b].material.name));
+    case_file::fail_at(
+        c, "contact.peridynamics.fracture_energy",
+        fmt::format("contact model 2 needs the interface's fracture energy: give "
+                    "contact.peridynamics.fracture_energy, or a surface_energy to materials "
+                    "'{}' and '{}' (then G_c = gamma_a + gamma_b)",
+                    s.bodies[a].material.name, s.bodies[b].material.name));
   const double G_c = contact.fracture_energy.value_or(gamma_a + gamma_b);
   const double s_c = critical_stretch(G_c, K, delta);
   const InterfaceBondLaw fit = scaled_law(
@@ -85,7 +86,7 @@ InterfaceBondLaw interface_bond_law(const case_file::Case& c, const State& s, st
 // The law between bodies a and b (pd/contact.hpp): lengths from the finer spacing, constants
 // from the softer material and the larger horizon, the same both ways.
 ContactLaw contact_law(const case_file::Case& c, const State& s, std::size_t a, std::size_t b) {
-  const case_file::Contact& contact = c.contact;
+  const case_file::PeridynamicsContact& contact = c.contact.peridynamics;
   const double delta = std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon);
   const double K = std::min(s.bodies[a].material.elastic.bulk_modulus,
                             s.bodies[b].material.elastic.bulk_modulus);
@@ -103,8 +104,8 @@ ContactLaw contact_law(const case_file::Case& c, const State& s, std::size_t a, 
     return law;
   }
   const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
-  law.distance = law.reach = s.settings.contact_distance * spacing;
-  law.initial_fraction = s.settings.contact_initial_fraction;
+  law.distance = law.reach = contact.repulsion.distance * spacing;
+  law.initial_fraction = contact.repulsion.initial_fraction;
   if (contact.model == case_file::ContactModel::InterfaceBonds) {
     law.kind = ContactLaw::Kind::InterfaceBonds;
     law.micromodulus = micromodulus;
@@ -112,7 +113,7 @@ ContactLaw contact_law(const case_file::Case& c, const State& s, std::size_t a, 
     law.reach = law.distance * (1.0 + law.interface.break_stretch());
     return law;
   }
-  law.stiffness = s.settings.contact_stiffness * micromodulus / delta;
+  law.stiffness = contact.repulsion.stiffness * micromodulus / delta;
   return law;
 }
 
@@ -130,7 +131,7 @@ void check_initial_gap(const case_file::Case& c, const State& s) {
       const double r_e = equilibrium_distance(law.lennard_jones);
       if (r < r_e && r < law.reach)
         case_file::fail_at(
-            c, "contact.model",
+            c, "contact.peridynamics.model",
             fmt::format("bodies '{}' and '{}' start {:.4g} um apart (points {} and {}), closer "
                         "than the Lennard-Jones equilibrium distance r0 (2 n beta / m)^(-1/(m-n)) "
                         "= {:.4g} um (PD paper eq 17): place them at least that far apart "
@@ -257,9 +258,10 @@ void set_up_contact(const case_file::Case& c, State& s) {
       reach = std::max(reach, s.contact_law.back().reach);
     }
   s.contact.skin = 0.5 * s.min_spacing;
-  s.contact.remembers_stretch = c.contact.model == case_file::ContactModel::InterfaceBonds;
+  s.contact.remembers_stretch =
+      c.contact.peridynamics.model == case_file::ContactModel::InterfaceBonds;
   // An adhesive contact can hold a body: the verdict then reads the area it holds.
-  s.bonding = c.contact.model != case_file::ContactModel::Repulsive;
+  s.bonding = c.contact.peridynamics.model != case_file::ContactModel::Repulsive;
   s.contact.build(N, reach + s.contact.skin);
 }
 

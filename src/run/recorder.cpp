@@ -53,7 +53,8 @@ Recorder::Recorder(const case_file::Case& c, const bodies::Bodies& s, std::files
       verdict_(c.metrics, s),
       checkpoints_(c.output),
       checks_(metrics::energy_budget(s).total(),
-              c.contact.model != case_file::ContactModel::Repulsive || c.grip.has_value()) {
+              c.contact.peridynamics.model != case_file::ContactModel::Repulsive ||
+                  c.grip.has_value()) {
   summary_.threads = omp_get_max_threads();
   summary_.particles = s.points.size();
   summary_.discretisation = s.discretisation;

@@ -138,11 +138,12 @@ GeneratedCase deposit_case(const DepositFile& file, const studies::Placement& pl
   line("  shape_function: gimp");
   line(fmt::format("  end_time: {} ns", number((last_arrival + file.settle_time) * 1e9)));
   line("contact:");
+  line("  mpm:");
   if (file.contact_normal == "substrate") {
-    line("  normal: body:substrate   # at particle-substrate pairs, as the calibration");
-    line("  other_pairs_normal: average-gradient   # between particles");
+    line("    normal: body:substrate   # at particle-substrate pairs, as the calibration");
+    line("    other_pairs_normal: average-gradient   # between particles");
   } else {
-    line("  normal: " + file.contact_normal +
+    line("    normal: " + file.contact_normal +
          "   # the bodies in arrival order, the substrate last (thesis §5.2.3)");
   }
   line("bonding:");

@@ -26,8 +26,8 @@ using case_file::kRequired;
 constexpr std::array<std::string_view, 3> kDistributions{"fixed", "normal", "log-normal"};
 constexpr std::array<std::string_view, 3> kBondingModels{"none", "strain", "energy"};
 // `substrate`: the substrate's normal at particle-substrate pairs (the rule the bonding model is
-// calibrated with), the average gradient between particles (case keys contact.normal and
-// contact.other_pairs_normal); the others are contact.normal's own.
+// calibrated with), the average gradient between particles (case keys contact.mpm.normal and
+// contact.mpm.other_pairs_normal); the others are contact.mpm.normal's own.
 constexpr std::array<std::string_view, 4> kContactNormals{"substrate", "highest-id",
                                                           "average-gradient", "max-gradient"};
 constexpr case_file::Range kAtLeastOne{1.0, case_file::kInfinity, false, false};

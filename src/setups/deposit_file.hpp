@@ -24,7 +24,7 @@ struct DepositFile {
   double verdict_window = 20e-9;             // s, the cases' metrics.verdict_window
   double voxel = 0.0;                        // the porosity's voxel edge, m (default: spacing)
   std::string bonding = "energy";
-  std::string contact_normal = "substrate";  // or a contact.normal (deposit_file.cpp)
+  std::string contact_normal = "substrate";  // or a contact.mpm.normal (deposit_file.cpp)
   studies::DepositPlan plan;
   // Where values were given, "FILE:LINE:COLUMN", for errors found after reading (placement)
   // and for the generated case's keys.

@@ -103,7 +103,7 @@ void append_coarsening(std::string& y, const ImpactSpec& spec, const SubstrateSi
 // equilibrium distance at t = 0 (pd/setup.cpp refuses that).
 double lennard_jones_lift(const ImpactSpec& spec) {
   if (spec.contact != "lennard-jones") return 0.0;
-  const case_file::Contact defaults;
+  const case_file::PeridynamicsContact defaults;
   const double reach = defaults.cutoff * defaults.r0 * spec.spacing;
   // Touching, the nearest points are one spacing apart; each spacing of lift adds one.
   return (std::ceil(reach / spec.spacing - 1e-9) - 1.0) * spec.spacing;
@@ -155,12 +155,14 @@ GeneratedCase peridynamics_impact_case(const ImpactSpec& spec) {
   if (quarter) line("symmetry: {x: 0 um, y: 0 um}");
   if (spec.contact == "lennard-jones") {
     line("contact:");
-    line("  model: lennard-jones   # the PD paper's contact model 1 (eqs 15-22)");
-    if (spec.beta) line("  beta: " + number(*spec.beta));
+    line("  peridynamics:");
+    line("    model: lennard-jones   # the PD paper's contact model 1 (eqs 15-22)");
+    if (spec.beta) line("    beta: " + number(*spec.beta));
   }
   if (spec.contact == "interface-bonds") {
     line("contact:");
-    line("  model: interface-bonds   # the PD paper's contact model 2 (eqs 23-25)");
+    line("  peridynamics:");
+    line("    model: interface-bonds   # the PD paper's contact model 2 (eqs 23-25)");
   }
   line("solver:");
   line("  method: peridynamics");
@@ -321,7 +323,8 @@ void append_grid_and_solver(std::string& y, const ImpactSpec& spec, const Substr
   line("  shape_function: " + spec.shape_function);
   line(fmt::format("  end_time: {} ns", number(spec.end_time * 1e9)));
   line("contact:");
-  line("  normal: body:substrate   # the thesis' choice in all its tests (§3.5.4)");
+  line("  mpm:");
+  line("    normal: body:substrate   # the thesis' choice in all its tests (§3.5.4)");
 }
 
 // Which option set each generated key of the MPM impact, for errors located at the option.

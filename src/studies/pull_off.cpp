@@ -13,6 +13,7 @@
 #include "run/checkpoints.hpp"
 #include "run/interface_areas.hpp"
 #include "run/run.hpp"
+#include "run/solver.hpp"
 
 namespace coldspray::studies {
 namespace {
@@ -45,7 +46,7 @@ Eigen::Vector3d away_from_substrate(const case_file::Case& c, std::size_t body) 
 // The pull's direction: away from the substrate, or, in shear, along x, which needs a model
 // that is neither r-z nor cut at x = const.
 Eigen::Vector3d pull_direction(const case_file::Case& c, std::size_t body,
-                               const run::InterfaceAreas& areas, const PullOffOptions& o) {
+                               const metrics::InterfaceAreas& areas, const PullOffOptions& o) {
   if (!o.shear) return away_from_substrate(c, body);
   if (areas.axisymmetric)
     throw InputError("--direction", "",
@@ -61,7 +62,7 @@ Eigen::Vector3d pull_direction(const case_file::Case& c, std::size_t body,
 
 // From the modelled part to the whole: 2 per symmetry plane the pull lies in (the force across
 // the interface is the same on both sides of it); an r-z model's forces are its rings'.
-double whole_factor(const run::InterfaceAreas& areas, const Eigen::Vector3d& direction) {
+double whole_factor(const metrics::InterfaceAreas& areas, const Eigen::Vector3d& direction) {
   if (areas.axisymmetric) return 1.0;
   double factor = 1.0;
   for (int d = 0; d < 2; ++d)
@@ -69,50 +70,11 @@ double whole_factor(const run::InterfaceAreas& areas, const Eigen::Vector3d& dir
   return factor;
 }
 
-// Whether anything holds the body to the others: the MPM's bonding model, or an adhesive
-// peridynamic contact law.
-bool holds_bonds(const case_file::Case& c) {
-  return c.solver.method == case_file::Method::Mpm
-             ? c.bonding.model != case_file::BondingModel::None
-             : c.contact.model != case_file::ContactModel::Repulsive;
-}
-
-// The default travel: for peridynamics three spacings of the splat, beyond the reach of either
-// adhesive law; for the MPM, twice the opening its bonds let go at, the debonding law's delta_c
-// (the mean of the bonded points that carry a traction) but at most two cells, as the grid sees
-// an opening only while both bodies share nodes, plus two cells.
-double default_distance(const case_file::Case& c, std::size_t body,
-                        const run::InterfaceAreas& areas) {
-  if (c.solver.method != case_file::Method::Mpm) return 3.0 * c.bodies[body].spacing;
-  const double cell = c.grid->cell_size;
-  double opening = 0.0, area = 0.0;
-  for (const run::InterfacePoint& q : areas.points) {
-    if (!(q.strength > 0.0)) continue;  // carries nothing (a melted point's flow stress is 0)
-    opening += q.area * q.critical_opening;
-    area += q.area;
-  }
-  return (area > 0.0 ? 2.0 * std::min(opening / area, 2.0 * cell) : 0.0) + 2.0 * cell;
-}
-
-// The MPM's substrate is held at its bottom during the pull, as the PD's is in its impact: the
-// absorbing dashpots of the impact would let it follow the grip.
-void hold_bottoms(case_file::Case& c, std::size_t pulled) {
-  if (c.solver.method != case_file::Method::Mpm) return;
-  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
-    if (b == pulled) continue;
-    auto& absorbing = c.bodies[b].absorbing;
-    const auto bottom = std::find(absorbing.begin(), absorbing.end(), case_file::BodyFace::Bottom);
-    if (bottom == absorbing.end()) continue;
-    absorbing.erase(bottom);
-    c.bodies[b].fixed.push_back(case_file::BodyFace::Bottom);
-  }
-}
-
 // Each bonded point's strength at the start of the pull, for the radial profile.
-void write_interface(const std::filesystem::path& file, const run::InterfaceAreas& areas) {
+void write_interface(const std::filesystem::path& file, const metrics::InterfaceAreas& areas) {
   io::write_atomically(file, [&](std::ostream& out) {
     out << "x,y,z,radius,area,bond,damage,strength,critical_opening\n";
-    for (const run::InterfacePoint& q : areas.points)
+    for (const metrics::InterfacePoint& q : areas.points)
       out << fmt::format(
           "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n",
           q.position[0], q.position[1], q.position[2], q.radius, q.area, q.bond, q.damage,
@@ -152,44 +114,37 @@ void write_results(const PullOffOptions& o, const PullOffResult& r, const std::s
                        [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
-// The MPM's bonds let go under the debonding law during the pull even where the impact ran
-// without it (its default, bonds that hold for good: the shipped calibration's model decides
-// the verdict, the law the strength; docs/pull-off.md). The impact's own law and its
-// parameters, where it set them, carry over.
-void debond_during_pull(case_file::Case& c) {
-  if (c.solver.method == case_file::Method::Mpm && c.bonding.model != case_file::BondingModel::None)
-    c.bonding.debond.law = case_file::DebondLaw::Cohesive;
-}
-
 }  // namespace
 
 PullOffResult pull_off(const PullOffOptions& o) {
   const std::filesystem::path checkpoint = run::find_checkpoint(o.impact);
   const case_file::Case impact = run::checkpoint_case(checkpoint);
   case_file::Case c = impact;
-  debond_during_pull(c);
+  // What differs by solver: what holds a bond, its default travel, what is held (mpm/answers.hpp,
+  // pd/answers.hpp).
+  run::with_solver(c.solver.method, [&](auto solver) { debond_during_pull(solver, c); });
   if (!(o.speed > 0.0)) throw InputError("--speed", "", "must be positive");
   if (!(o.fraction > 0.0 && o.fraction <= 1.0)) throw InputError("--grip", "", "must be in (0, 1]");
   const std::size_t body = gripped_body(c, o);
   PullOffResult r;
-  const run::InterfaceAreas areas = run::interface_areas(c, checkpoint, body);
+  const metrics::InterfaceAreas areas = run::interface_areas(c, checkpoint, body);
   r.bonded_area = areas.bonded;
   r.projected_area = areas.projected;
   const Eigen::Vector3d direction = pull_direction(c, body, areas, o);
-  if (!holds_bonds(c))
-    throw InputError(o.impact.string(), "",
-                     c.solver.method == case_file::Method::Mpm
-                         ? "was run without bonding (bonding.model: none): no bond holds the "
-                           "splat to pull off"
-                         : "was run with the repulsive contact (contact.model: repulsive): no "
-                           "adhesion holds the splat to pull off");
-  const double distance = o.distance > 0.0 ? o.distance : default_distance(c, body, areas);
+  run::with_solver(c.solver.method, [&](auto solver) {
+    if (!holds_bonds(solver, c))
+      throw InputError(o.impact.string(), "", std::string(unbonded_reason(solver)));
+  });
+  const double distance =
+      o.distance > 0.0 ? o.distance : run::with_solver(c.solver.method, [&](auto solver) {
+        return default_pull_distance(solver, c, body, areas);
+      });
   const double duration = distance / o.speed;
 
   // The pull: the impact's case from its checkpoint's state, at rest, its upper part gripped.
   c.name += "-pull-off";
   for (case_file::Body& b : c.bodies) b.velocity.setZero();
-  hold_bottoms(c, body);
+  run::with_solver(c.solver.method, [&](auto solver) { hold_for_pull(solver, c, body); });
   c.grip = case_file::Grip{c.bodies[body].name, o.fraction, o.speed * direction,
                            away_from_substrate(impact, body), kRampShare * duration};
   c.solver.end_time = duration;

@@ -17,6 +17,11 @@ inline std::string case_path(const std::string& name) {
   return std::string(COLDSPRAY_TEST_DATA) + "/cases/" + name;
 }
 
+// A case of examples/, e.g. "verification/hertz.yaml".
+inline std::string example(const std::string& name) {
+  return std::string(COLDSPRAY_SOURCE_DIR) + "/examples/" + name;
+}
+
 // The InputError expectations all the tests share (tests/support/input_error.hpp).
 using coldspray::testing::contains;
 using coldspray::testing::input_error;

@@ -90,7 +90,7 @@ TEST(InputErrors, NonPhysicalValuesGivenByOverride) {
       {"solver.cfl=1.5", "solver.cfl", "must be in (0, 1] with solver.method mpm"},
       {"solver.end_time=-1 ns", "solver.end_time", "must be > 0"},
       {"output.history_interval=-1 ns", "output.history_interval", "must be >= 0"},
-      {"contact.friction=-0.1", "contact.friction", "must be >= 0"},
+      {"contact.mpm.friction=-0.1", "contact.mpm.friction", "must be >= 0"},
       {"metrics.bonded_separation_speed=0 m/s", "metrics.bonded_separation_speed", "must be > 0"},
       {"metrics.verdict_window=0 ns", "metrics.verdict_window", "must be > 0"},
   };
@@ -122,7 +122,7 @@ TEST(InputErrors, DuplicateBodyOrProbeName) {
 }
 
 TEST(InputErrors, ContactNormalBodyNotFound) {
-  expect_error({"contact-body.yaml", "13:11", "contact.normal", "unknown body 'substrate'"});
+  expect_error({"contact-body.yaml", "14:13", "contact.mpm.normal", "unknown body 'substrate'"});
 }
 
 TEST(InputErrors, SpacingLargerThanTheGridCell) {
@@ -199,7 +199,7 @@ TEST(InputErrors, OtherMistakes) {
       {{"solver.artificial_viscosity.enabled=maybe"},
        "solver.artificial_viscosity.enabled",
        "expected true or false"},
-      {{"contact.normal='body:'"}, "contact.normal", "unknown contact normal 'body:'"},
+      {{"contact.mpm.normal='body:'"}, "contact.mpm.normal", "unknown contact normal 'body:'"},
       {{"grid.faces={xmn: fixed}"}, "grid.faces.xmn", "did you mean 'xmin'?"},
       {{"grid.faces={xmin: glued}"}, "grid.faces.xmin", "unknown value 'glued'"},
       {{"grid.min=[0, 0, 0]"}, "grid.min", "give both grid.min and grid.max, or neither"},

@@ -34,8 +34,8 @@ TEST(LoadCase, FillsEveryDefault) {
   EXPECT_TRUE(c.solver.artificial_viscosity.enabled);
   EXPECT_EQ(c.solver.artificial_viscosity.linear, 0.06);
   EXPECT_EQ(c.solver.artificial_viscosity.quadratic, 1.5);
-  EXPECT_EQ(c.contact.normal, ContactNormal::MaxGradient);
-  EXPECT_EQ(c.contact.friction, 0.0);
+  EXPECT_EQ(c.contact.mpm.normal, ContactNormal::MaxGradient);
+  EXPECT_EQ(c.contact.mpm.friction, 0.0);
   EXPECT_EQ(c.output.history_interval, 0.0);
   EXPECT_EQ(c.output.snapshot_interval, 0.0);
   EXPECT_TRUE(c.output.probes.empty());
@@ -85,9 +85,9 @@ TEST(LoadCase, ReadsEveryKeyInSi) {
   EXPECT_EQ(c.solver.artificial_viscosity.linear, 0.1);
   EXPECT_EQ(c.solver.artificial_viscosity.quadratic, 2.0);
 
-  EXPECT_EQ(c.contact.normal, ContactNormal::Body);
-  EXPECT_EQ(c.contact.normal_body, "substrate");
-  EXPECT_EQ(c.contact.friction, 0.1);
+  EXPECT_EQ(c.contact.mpm.normal, ContactNormal::Body);
+  EXPECT_EQ(c.contact.mpm.normal_body, "substrate");
+  EXPECT_EQ(c.contact.mpm.friction, 0.1);
 
   EXPECT_EQ(c.output.history_interval, 1e-9);
   EXPECT_EQ(c.output.snapshot_interval, 10e-9);
@@ -245,13 +245,14 @@ std::string three_bodies(const std::string& extra) {
 // The contact normal's default: MVG for two bodies (FillsEveryDefault, one body), the
 // order-independent average gradient for three or more; a given rule is kept.
 TEST(LoadCase, ThreeBodiesDefaultToTheAverageGradientNormal) {
-  EXPECT_EQ(load_case_text("three", three_bodies("")).contact.normal,
+  EXPECT_EQ(load_case_text("three", three_bodies("")).contact.mpm.normal,
             ContactNormal::AverageGradient);
-  EXPECT_EQ(load_case_text("three", three_bodies("contact: {friction: 0.1}\n")).contact.normal,
+  EXPECT_EQ(load_case_text("three", three_bodies("contact: {friction: 0.1}\n")).contact.mpm.normal,
             ContactNormal::AverageGradient);
-  EXPECT_EQ(load_case_text("three", three_bodies("contact: {normal: highest-id}\n")).contact.normal,
-            ContactNormal::HighestId);
-  EXPECT_EQ(load_case_text("generated", kGenerated).contact.normal, ContactNormal::MaxGradient);
+  EXPECT_EQ(
+      load_case_text("three", three_bodies("contact: {normal: highest-id}\n")).contact.mpm.normal,
+      ContactNormal::HighestId);
+  EXPECT_EQ(load_case_text("generated", kGenerated).contact.mpm.normal, ContactNormal::MaxGradient);
 }
 
 }  // namespace

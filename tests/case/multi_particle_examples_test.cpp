@@ -31,7 +31,7 @@ TEST(MultiParticleExamples, TwoParticlesAtTheThesisOffsets) {
     EXPECT_NEAR(top.center.x() - bottom.center.x(), offset_um * 1e-6, 1e-12);
     for (int b = 0; b < 2; ++b) EXPECT_NEAR(c.bodies[b].velocity.z(), -810.0, 1e-9);
     EXPECT_EQ(c.bodies[2].name, "substrate");  // highest-id: the substrate's normal (§5.2.3)
-    EXPECT_EQ(c.contact.normal, ContactNormal::HighestId);
+    EXPECT_EQ(c.contact.mpm.normal, ContactNormal::HighestId);
     EXPECT_NEAR(c.grid->cell_size, 0.7e-6, 1e-15);
     EXPECT_NEAR(c.bodies[0].spacing, 0.175e-6, 1e-15);
     EXPECT_EQ(c.grid->faces.at(GridFace::YMin), FaceCondition::Roller);

@@ -12,11 +12,8 @@ namespace coldspray::case_file {
 namespace {
 
 using testing::contains;
+using testing::example;
 using testing::input_error;
-
-std::string example(const std::string& name) {
-  return std::string(COLDSPRAY_SOURCE_DIR) + "/examples/" + name;
-}
 
 // The error names `key` and points at the --set that gave it, or else into the file.
 void expect_error(const std::string& file, const std::vector<Override>& overrides,
@@ -68,48 +65,54 @@ TEST(SolverSections, TheBondingModelIsTheMpms) {
                "bonding.model", "must be none with solver.method peridynamics");
 }
 
-// contact.other_pairs_normal: the rule at pairs without the body contact.normal names; with
+// contact.mpm.other_pairs_normal: the rule at pairs without the body contact.mpm.normal names; with
 // another normal it has no pairs to act on (exit 2 naming it).
 TEST(SolverSections, OtherPairsNormalGoesWithABodysNormal) {
-  const Case c = load_case(
-      example("al-14um-810.yaml"),
-      {{"contact.normal", "body:substrate"}, {"contact.other_pairs_normal", "average-gradient"}});
-  EXPECT_EQ(c.contact.normal, ContactNormal::Body);
-  EXPECT_EQ(c.contact.other_pairs_normal, ContactNormal::AverageGradient);
-  EXPECT_EQ(load_case(example("al-14um-810.yaml")).contact.other_pairs_normal,
+  const Case c = load_case(example("al-14um-810.yaml"),
+                           {{"contact.mpm.normal", "body:substrate"},
+                            {"contact.mpm.other_pairs_normal", "average-gradient"}});
+  EXPECT_EQ(c.contact.mpm.normal, ContactNormal::Body);
+  EXPECT_EQ(c.contact.mpm.other_pairs_normal, ContactNormal::AverageGradient);
+  EXPECT_EQ(load_case(example("al-14um-810.yaml")).contact.mpm.other_pairs_normal,
             ContactNormal::MaxGradient);
-  expect_error("al-14um-810.yaml",
-               {{"contact.normal", "highest-id"}, {"contact.other_pairs_normal", "highest-id"}},
-               "contact.other_pairs_normal", "applies with contact.normal: body:NAME only");
   expect_error(
       "al-14um-810.yaml",
-      {{"contact.normal", "body:substrate"}, {"contact.other_pairs_normal", "body:particle"}},
-      "contact.other_pairs_normal", "max-gradient");
+      {{"contact.mpm.normal", "highest-id"}, {"contact.mpm.other_pairs_normal", "highest-id"}},
+      "contact.mpm.other_pairs_normal", "applies with contact.mpm.normal: body:NAME only");
+  expect_error("al-14um-810.yaml",
+               {{"contact.mpm.normal", "body:substrate"},
+                {"contact.mpm.other_pairs_normal", "body:particle"}},
+               "contact.mpm.other_pairs_normal", "max-gradient");
 }
 
 TEST(SolverSections, ContactModelOneIsPeridynamicsOnly) {
-  expect_error("al-14um-810.yaml", {{"contact.model", "lennard-jones"}}, "contact.model",
-               "is peridynamics only");
+  expect_error("al-14um-810.yaml", {{"contact.peridynamics.model", "lennard-jones"}},
+               "contact.peridynamics.model", "is peridynamics only");
 }
 
 TEST(SolverSections, ContactModelOneParametersAreChecked) {
   const std::string spheres = "verification/pd-elastic-spheres.yaml";
   for (const char* beta : {"0", "-0.001", "1"})
-    expect_error(spheres, {{"contact.beta", beta}}, "contact.beta", "must be in (0, 1)");
-  expect_error(spheres, {{"contact.r0", "0"}}, "contact.r0", "must be > 0");
-  expect_error(spheres, {{"contact.cutoff", "1"}}, "contact.cutoff", "must be > 1");
-  expect_error(spheres, {{"contact.alpha", "-1 J"}}, "contact.alpha", "must be > 0");
-  expect_error(spheres, {{"contact.repulsion_exponent", "6"}}, "contact.repulsion_exponent",
-               "must exceed attraction_exponent");
-  expect_error(spheres, {{"contact.model", "sticky"}}, "contact.model", "lennard-jones");
-  const Case c = load_case(
-      example(spheres),
-      {{"contact.model", "lennard-jones"}, {"contact.beta", "0.004"}, {"contact.alpha", "2e-6 J"}});
-  EXPECT_EQ(c.contact.model, ContactModel::LennardJones);
-  EXPECT_EQ(c.contact.beta, 0.004);
-  EXPECT_EQ(c.contact.alpha, 2e-6);
-  EXPECT_EQ(c.contact.r0, 1.1);
-  EXPECT_EQ(c.contact.cutoff, 2.75);
+    expect_error(spheres, {{"contact.peridynamics.beta", beta}}, "contact.peridynamics.beta",
+                 "must be in (0, 1)");
+  expect_error(spheres, {{"contact.peridynamics.r0", "0"}}, "contact.peridynamics.r0",
+               "must be > 0");
+  expect_error(spheres, {{"contact.peridynamics.cutoff", "1"}}, "contact.peridynamics.cutoff",
+               "must be > 1");
+  expect_error(spheres, {{"contact.peridynamics.alpha", "-1 J"}}, "contact.peridynamics.alpha",
+               "must be > 0");
+  expect_error(spheres, {{"contact.peridynamics.repulsion_exponent", "6"}},
+               "contact.peridynamics.repulsion_exponent", "must exceed attraction_exponent");
+  expect_error(spheres, {{"contact.peridynamics.model", "sticky"}}, "contact.peridynamics.model",
+               "lennard-jones");
+  const Case c = load_case(example(spheres), {{"contact.peridynamics.model", "lennard-jones"},
+                                              {"contact.peridynamics.beta", "0.004"},
+                                              {"contact.peridynamics.alpha", "2e-6 J"}});
+  EXPECT_EQ(c.contact.peridynamics.model, ContactModel::LennardJones);
+  EXPECT_EQ(c.contact.peridynamics.beta, 0.004);
+  EXPECT_EQ(c.contact.peridynamics.alpha, 2e-6);
+  EXPECT_EQ(c.contact.peridynamics.r0, 1.1);
+  EXPECT_EQ(c.contact.peridynamics.cutoff, 2.75);
 }
 
 // Coarsened seeding (docs/mpm.md): its coarsest points no larger than a cell, and MPM only.
@@ -147,21 +150,22 @@ TEST(SolverSections, DebondingLawParametersArePositive) {
 
 TEST(SolverSections, ContactModelTwoParametersAreChecked) {
   const std::string spheres = "verification/pd-elastic-spheres.yaml";
-  expect_error("al-14um-810.yaml", {{"contact.model", "interface-bonds"}}, "contact.model",
-               "is peridynamics only");
+  expect_error("al-14um-810.yaml", {{"contact.peridynamics.model", "interface-bonds"}},
+               "contact.peridynamics.model", "is peridynamics only");
   for (const char* s_y : {"0", "-0.001", "1"})
-    expect_error(spheres, {{"contact.yield_stretch", s_y}}, "contact.yield_stretch",
-                 "must be in (0, 1)");
-  expect_error(spheres, {{"contact.softening", "0"}}, "contact.softening", "must be > 0");
-  expect_error(spheres, {{"contact.fracture_energy", "0 J/m^2"}}, "contact.fracture_energy",
+    expect_error(spheres, {{"contact.peridynamics.yield_stretch", s_y}},
+                 "contact.peridynamics.yield_stretch", "must be in (0, 1)");
+  expect_error(spheres, {{"contact.peridynamics.softening", "0"}}, "contact.peridynamics.softening",
                "must be > 0");
-  const Case c = load_case(example(spheres), {{"contact.model", "interface-bonds"},
-                                              {"contact.fracture_energy", "2 J/m^2"},
-                                              {"contact.softening", "300"}});
-  EXPECT_EQ(c.contact.model, ContactModel::InterfaceBonds);
-  EXPECT_EQ(c.contact.fracture_energy, 2.0);
-  EXPECT_EQ(c.contact.softening, 300.0);
-  EXPECT_FALSE(c.contact.yield_stretch);
+  expect_error(spheres, {{"contact.peridynamics.fracture_energy", "0 J/m^2"}},
+               "contact.peridynamics.fracture_energy", "must be > 0");
+  const Case c = load_case(example(spheres), {{"contact.peridynamics.model", "interface-bonds"},
+                                              {"contact.peridynamics.fracture_energy", "2 J/m^2"},
+                                              {"contact.peridynamics.softening", "300"}});
+  EXPECT_EQ(c.contact.peridynamics.model, ContactModel::InterfaceBonds);
+  EXPECT_EQ(c.contact.peridynamics.fracture_energy, 2.0);
+  EXPECT_EQ(c.contact.peridynamics.softening, 300.0);
+  EXPECT_FALSE(c.contact.peridynamics.yield_stretch);
 }
 
 TEST(SolverSections, TheGripIsChecked) {

@@ -73,7 +73,7 @@ TEST(Impact, WriteCaseGivesTheSimilarSetUpAndPassesCheck) {
   EXPECT_NEAR(c.solver.end_time, end, 1e-11 * end);
   EXPECT_NEAR(c.output.history_interval, 0.5e-9 * scale, 1e-11 * 0.5e-9 * scale);
   EXPECT_NEAR(c.output.snapshot_interval, 10e-9 * scale, 1e-11 * 10e-9 * scale);
-  EXPECT_EQ(c.contact.normal_body, "substrate");
+  EXPECT_EQ(c.contact.mpm.normal_body, "substrate");
   // Energy bonding with the schema's parameters (the project's calibration).
   case_file::Bonding energy;
   energy.model = case_file::BondingModel::Energy;
@@ -226,38 +226,38 @@ TEST(Impact, ContactModelOneLiftsTheParticleToItsCutOff) {
   const case_file::Case c = written_case(
       "impact --solver peridynamics --diameter 30um --velocity 500m/s --spacing 1.2um "
       "--contact lennard-jones --beta 0.004");
-  EXPECT_EQ(c.contact.model, case_file::ContactModel::LennardJones);
-  EXPECT_EQ(c.contact.beta, 0.004);
+  EXPECT_EQ(c.contact.peridynamics.model, case_file::ContactModel::LennardJones);
+  EXPECT_EQ(c.contact.peridynamics.beta, 0.004);
   EXPECT_NEAR(std::get<geometry::Sphere>(c.bodies.at(0).shape).center.z(), 15e-6 + 3.6e-6, 1e-15);
   const case_file::Case repulsive =
       written_case("impact --solver peridynamics --diameter 30um --velocity 500m/s");
-  EXPECT_EQ(repulsive.contact.model, case_file::ContactModel::Repulsive);
+  EXPECT_EQ(repulsive.contact.peridynamics.model, case_file::ContactModel::Repulsive);
   EXPECT_NEAR(std::get<geometry::Sphere>(repulsive.bodies.at(0).shape).center.z(), 15e-6, 1e-15);
 }
 
 // Model 1 on bodies seeded touching would push them apart at t = 0 with (r0/r)^13: refused.
 TEST(Impact, ContactModelOneRefusesBodiesCloserThanItsEquilibrium) {
   const std::string dir = make_temp_dir("impact");
-  const auto r = run_coldspray(
-      "run '" + std::string(COLDSPRAY_SOURCE_DIR) +
-          "/examples/verification/pd-quarter-impact.yaml' --set contact.model=lennard-jones",
-      dir);
+  const auto r = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                                   "/examples/verification/pd-quarter-impact.yaml' --set "
+                                   "contact.peridynamics.model=lennard-jones",
+                               dir);
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("contact.model"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("contact.peridynamics.model"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("closer than the Lennard-Jones equilibrium distance"), std::string::npos)
       << r.output;
 }
 
 // Model 2 takes the interface's G_c from the materials' surface energies: a material without one
-// needs contact.fracture_energy.
+// needs contact.peridynamics.fracture_energy.
 TEST(Impact, ContactModelTwoNeedsAFractureEnergy) {
   const std::string dir = make_temp_dir("impact");
-  const auto r = run_coldspray(
-      "run '" + std::string(COLDSPRAY_SOURCE_DIR) +
-          "/examples/verification/pd-elastic-wave.yaml' --set contact.model=interface-bonds",
-      dir);
+  const auto r = run_coldspray("run '" + std::string(COLDSPRAY_SOURCE_DIR) +
+                                   "/examples/verification/pd-elastic-wave.yaml' --set "
+                                   "contact.peridynamics.model=interface-bonds",
+                               dir);
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("contact.fracture_energy"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("contact.peridynamics.fracture_energy"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'elastic-al'"), std::string::npos) << r.output;
 }
 
@@ -272,7 +272,8 @@ TEST(Impact, AnAdhesiveContactDecidesThePeridynamicVerdict) {
   for (const auto& [model, outcome, area] :
        std::vector<std::tuple<std::string, std::string, double>>{
            {"interface-bonds", "bonded", 36e-12}, {"repulsive", "rebounded", 0.0}}) {
-    const auto r = run_coldspray(run + " --out " + model + " --set contact.model=" + model, dir);
+    const auto r =
+        run_coldspray(run + " --out " + model + " --set contact.peridynamics.model=" + model, dir);
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream in(fs::path(dir) / model / "summary.json");
     const nlohmann::json block = nlohmann::json::parse(in)["bodies"]["block"];

@@ -47,7 +47,7 @@ TEST(InputGuards, ASweepRangeOfAbsurdlyManyValuesIsRefused) {
   EXPECT_TRUE(fs::is_empty(dir));
   const auto product = run_coldspray("sweep '" + kExample +
                                          "' --vary 'solver.cfl=0.1:0.2:0.0001' --vary "
-                                         "'contact.friction=0:1:0.001' --out sw --quiet",
+                                         "'contact.mpm.friction=0:1:0.001' --out sw --quiet",
                                      dir);
   EXPECT_EQ(product.status, 2) << product.output;
   EXPECT_TRUE(has(product, "combinations of the varied values: at most 100000")) << product.output;

@@ -133,7 +133,7 @@ TEST(Restart, PeridynamicsWithInterfaceBondsIsBitIdentical) {
   // not what this test checks, and 8 times the steps under the sanitizers.
   expect_restart_bit_identical(
       kExamples + "pd-quarter-impact.yaml",
-      "--set symmetry.x=0um --set symmetry.y=0um --set contact.model=interface-bonds "
+      "--set symmetry.x=0um --set symmetry.y=0um --set contact.peridynamics.model=interface-bonds "
       "--set solver.end_time=6ns --set metrics.verdict_extensions=0 "
       "--set output.checkpoint_interval=2ns --set output.snapshot_interval=1ns");
 }

@@ -219,7 +219,7 @@ bool check_sets(const Seed& seed, const std::vector<std::string>& texts, const s
     load_case_text(kName, seed.text, {}, sets);
     refused = false;
   } catch (const InputError& e) {
-    // At the --set, or at the key of the file that a --set value contradicts (contact.normal
+    // At the --set, or at the key of the file that a --set value contradicts (contact.mpm.normal
     // naming a body a --set renamed; the grid's cell size, where its size cap is reported).
     const bool at_a_key = e.where().starts_with(kName) && !e.key().empty();
     EXPECT_TRUE(e.where().starts_with("--set") || at_a_key) << label << shown << ": " << e.what();

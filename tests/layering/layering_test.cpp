@@ -26,8 +26,8 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"bonding", {"core", "case", "materials"}},
     {"bodies", {"core", "case", "materials", "geometry"}},
     {"metrics", {"core", "case", "materials", "geometry", "bodies"}},
-    {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies"}},
-    {"pd", {"core", "case", "materials", "geometry", "bodies"}},
+    {"mpm", {"core", "case", "materials", "geometry", "bonding", "bodies", "metrics"}},
+    {"pd", {"core", "case", "materials", "geometry", "bodies", "metrics"}},
     {"checkpoint", {"core", "io", "bodies", "mpm", "pd"}},
     {"run",
      {"core", "case", "materials", "io", "bodies", "bonding", "metrics", "mpm", "pd",
@@ -76,6 +76,36 @@ TEST(Layering, EveryIncludeStaysWithinItsLayers) {
           << entry.path().lexically_relative(src).string() << ":" << n << " includes " << target
           << "/, outside the layers of src/" << folder << "/";
     }
+  }
+  EXPECT_GT(files, 100);
+}
+
+// Each solver answers its own questions (docs/solvers.md, "The seam"): solver.method is read where
+// a case is parsed (case/), chosen (cli/impact_options.cpp) or written (setups/), dispatched once
+// in run/solver.hpp, and answered in mpm/ and pd/. Elsewhere no code tests the method or which
+// state a SolverState holds.
+TEST(Layering, OnlyTheSeamTestsTheSolverMethod) {
+  const std::filesystem::path src = std::filesystem::path(COLDSPRAY_SOURCE_DIR) / "src";
+  const std::set<std::string> may_test = {"case", "setups", "mpm", "pd"};
+  const std::set<std::string> files_that_may = {"cli/impact_options.cpp", "run/solver.hpp",
+                                                "run/solver.cpp"};
+  const std::vector<std::string> tests = {
+      "Method::Mpm",  "Method::Peridynamics", "holds_alternative<mpm::", "holds_alternative<pd::",
+      "get_if<mpm::", "get_if<pd::"};
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(src)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string file = entry.path().lexically_relative(src).generic_string();
+    if (may_test.count(file.substr(0, file.find('/'))) != 0 || files_that_may.count(file) != 0)
+      continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      for (const std::string& t : tests)
+        EXPECT_EQ(line.find(t), std::string::npos)
+            << "src/" << file << ":" << n << " tests the solver (" << t
+            << "): answer it in mpm/answers.hpp and pd/answers.hpp, through run::with_solver";
   }
   EXPECT_GT(files, 100);
 }

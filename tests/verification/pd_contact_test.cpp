@@ -28,7 +28,7 @@ State impact_to_10ns(const std::string& contact_distance) {
        {"symmetry.y", "0 um"},
        {"bodies.particle.spacing", "0.5 um"},
        {"bodies.substrate.spacing", "0.5 um"},
-       {"peridynamics.contact_distance", contact_distance}});
+       {"contact.peridynamics.repulsion.distance", contact_distance}});
   State s = build_state(c);
   while (s.time < 10e-9) {
     s.dt = stable_time_step(s, c.solver.cfl);
