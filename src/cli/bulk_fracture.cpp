@@ -11,13 +11,13 @@
 #include <numbers>
 
 #include "case/load.hpp"
-#include "cli/bulk_fracture_fit.hpp"
 #include "cli/commands.hpp"
 #include "cli/path_option.hpp"
 #include "cli/quantity_option.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "studies/bulk_fracture_fit.hpp"
 
 namespace coldspray::cli {
 
@@ -72,9 +72,10 @@ void add_bulk_fracture(CLI::App& app) {
                            c * pd::envelope_per_micromodulus(law, s));
       }
     });
-    write_bulk_fracture_fit(folder / "fit.json",
-                            {material.name, h, delta, K, c, G_c, s_c, law,
-                             pd::work_of_fracture(curve) * s_c * s_c, pd::interface_work(law)});
+    studies::write_bulk_fracture_fit(
+        folder / "fit.json",
+        {material.name, h, delta, K, c, G_c, s_c, law.yield_stretch, law.softening,
+         law.break_stretch(), pd::work_of_fracture(curve) * s_c * s_c, pd::interface_work(law)});
     std::cout << fmt::format(
         "{} at {:.4g} um spacing, horizon {:.4g} um: G_c {:.4g} J/m^2, critical stretch s_c "
         "{:.5g} (eq 23)\nfitted (eq 24): yield stretch s_y {:.5g}, softening m {:.5g}, breaks at "

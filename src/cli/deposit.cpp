@@ -13,7 +13,6 @@
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
-#include "cli/deposit_json.hpp"
 #include "cli/impact_options.hpp"
 #include "cli/path_option.hpp"
 #include "cli/run_report.hpp"
@@ -26,6 +25,7 @@
 #include "setups/deposit_case.hpp"
 #include "setups/deposit_file.hpp"
 #include "setups/deposit_limits.hpp"
+#include "studies/deposit_json.hpp"
 
 namespace coldspray::cli {
 
@@ -60,6 +60,8 @@ void check_same_particles(const case_file::Case& c, const studies::Placement& pl
                                  "deposit with the file it was run from",
                                  file));
 }
+
+using studies::ParticleRow;
 
 std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
                                        const run::Summary& summary) {
@@ -136,7 +138,8 @@ void report_deposit(const setups::DepositFile& file, const studies::Placement& p
     bonded.push_back(r.bonded);
   }
   const run::DepositMeasures measures = measure_deposit(file, c, report.out_dir, masses, bonded);
-  write_deposit_json(report.out_dir / "deposit.json", file, rows, measures);
+  studies::write_deposit_json(report.out_dir / "deposit.json",
+                              {file.name, file.plan, file.voxel, rows, measures});
   print_deposit(rows, measures, std::cout);
   std::cout << fmt::format(
       "picture: /usr/bin/python3 tools/coldspray_plot.py deposit {} --out {}\n",

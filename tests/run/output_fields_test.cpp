@@ -9,13 +9,13 @@
 #include <utility>
 #include <vector>
 
-#include "cli/bulk_fracture_fit.hpp"
-#include "cli/deposit_json.hpp"
 #include "io/output_schema.hpp"
 #include "read_text.hpp"
 #include "run/summary.hpp"
+#include "studies/bulk_fracture_fit.hpp"
 #include "studies/calibration_json.hpp"
 #include "studies/critical_velocity.hpp"
+#include "studies/deposit_json.hpp"
 #include "studies/pull_off_fields.hpp"
 #include "temp_dir.hpp"
 
@@ -70,11 +70,11 @@ TEST(OutputFields, DocsTablesListTheDeclaredFieldsAndUnits) {
   const std::vector<std::pair<std::string, FieldUnits (*)()>> tables = {
       {"summary.json", coldspray::run::summary_field_units},
       {"pull-off summary.json", coldspray::studies::pull_off_field_units},
-      {"deposit.json", coldspray::cli::deposit_field_units},
+      {"deposit.json", coldspray::studies::deposit_field_units},
       {"vcrit_fit.json", coldspray::studies::vcrit_fit_field_units},
       {"calibration.json", coldspray::studies::calibration_field_units},
       {"activation calibration.json", coldspray::studies::activation_field_units},
-      {"bulk-fracture fit.json", coldspray::cli::bulk_fracture_field_units}};
+      {"bulk-fracture fit.json", coldspray::studies::bulk_fracture_field_units}};
   for (const auto& [file, declared] : tables) {
     SCOPED_TRACE(file);
     EXPECT_EQ(doc_table(file), declared());

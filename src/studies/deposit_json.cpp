@@ -1,21 +1,14 @@
-#include "cli/deposit_json.hpp"
+#include "studies/deposit_json.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include "io/json_number.hpp"
 
-namespace coldspray::cli {
+namespace coldspray::studies {
 namespace {
 
 using Json = nlohmann::ordered_json;
 using io::json_number;
-
-// What deposit.json is written from: the file, its particles' rows and the deposit's measures.
-struct DepositReport {
-  const setups::DepositFile& file;
-  const std::vector<ParticleRow>& rows;
-  const run::DepositMeasures& deposit;
-};
 
 Json verdict_name(const ParticleRow& r) {
   return r.body->verdict ? Json(metrics::outcome_name(r.body->verdict->outcome)) : Json("none");
@@ -62,15 +55,15 @@ Json particles_json(const DepositReport& d) {
 
 const io::OutputFields<DepositReport>& deposit_fields() {
   static const io::OutputFields<DepositReport> fields = {
-      {"name", "-", [](const auto& d) { return Json(d.file.name); }},
-      {"seed", "-", [](const auto& d) { return Json(d.file.plan.seed); }},
-      {"patch", "m", [](const auto& d) { return Json(d.file.plan.patch); }},
+      {"name", "-", [](const auto& d) { return Json(d.name); }},
+      {"seed", "-", [](const auto& d) { return Json(d.plan.seed); }},
+      {"patch", "m", [](const auto& d) { return Json(d.plan.patch); }},
       {"deposition_efficiency", "-", [](const auto& d) { return Json(d.deposit.efficiency); }},
       {"porosity", "-", [](const auto& d) { return Json(d.deposit.shape.porosity); }},
       {"mean_thickness", "m", [](const auto& d) { return Json(d.deposit.shape.mean_thickness); }},
       {"max_thickness", "m", [](const auto& d) { return Json(d.deposit.shape.max_thickness); }},
       {"coverage", "-", [](const auto& d) { return Json(d.deposit.shape.coverage); }},
-      {"voxel", "m", [](const auto& d) { return Json(d.file.voxel); }},
+      {"voxel", "m", [](const auto& d) { return Json(d.voxel); }},
       {"particles", "-", particles_json},
       {"thickness_map", "-",
        [](const auto& d) { return io::write_fields(thickness_map_fields(), d.deposit.shape); }}};
@@ -79,9 +72,8 @@ const io::OutputFields<DepositReport>& deposit_fields() {
 
 }  // namespace
 
-void write_deposit_json(const std::filesystem::path& path, const setups::DepositFile& file,
-                        const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit) {
-  io::write_fields_file(path, deposit_fields(), DepositReport{file, rows, deposit}, 1);
+void write_deposit_json(const std::filesystem::path& path, const DepositReport& report) {
+  io::write_fields_file(path, deposit_fields(), report, 1);
 }
 
 io::FieldUnits deposit_field_units() {
@@ -92,4 +84,4 @@ io::FieldUnits deposit_field_units() {
   return out;
 }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::studies

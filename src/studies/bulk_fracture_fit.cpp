@@ -1,8 +1,8 @@
-#include "cli/bulk_fracture_fit.hpp"
+#include "studies/bulk_fracture_fit.hpp"
 
 #include <nlohmann/json.hpp>
 
-namespace coldspray::cli {
+namespace coldspray::studies {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -17,9 +17,9 @@ const io::OutputFields<BulkFractureFit>& fit_fields() {
       {"micromodulus", "N/m^6", [](const auto& f) { return Json(f.micromodulus); }},
       {"fracture_energy", "J/m^2", [](const auto& f) { return Json(f.fracture_energy); }},
       {"critical_stretch", "-", [](const auto& f) { return Json(f.critical_stretch); }},
-      {"yield_stretch", "-", [](const auto& f) { return Json(f.law.yield_stretch); }},
-      {"softening", "-", [](const auto& f) { return Json(f.law.softening); }},
-      {"break_stretch", "-", [](const auto& f) { return Json(f.law.break_stretch()); }},
+      {"yield_stretch", "-", [](const auto& f) { return Json(f.yield_stretch); }},
+      {"softening", "-", [](const auto& f) { return Json(f.softening); }},
+      {"break_stretch", "-", [](const auto& f) { return Json(f.break_stretch); }},
       {"work_per_micromodulus_bulk", "-", [](const auto& f) { return Json(f.work_bulk); }},
       {"work_per_micromodulus_fitted", "-", [](const auto& f) { return Json(f.work_fitted); }}};
   return fields;
@@ -33,4 +33,4 @@ void write_bulk_fracture_fit(const std::filesystem::path& path, const BulkFractu
 
 io::FieldUnits bulk_fracture_field_units() { return io::field_units(fit_fields()); }
 
-}  // namespace coldspray::cli
+}  // namespace coldspray::studies
