@@ -8,7 +8,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "case/load.hpp"
@@ -18,6 +17,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "studies/bulk_fracture_fit.hpp"
 
 namespace coldspray::cli {
 
@@ -72,20 +72,10 @@ void add_bulk_fracture(CLI::App& app) {
                            c * pd::envelope_per_micromodulus(law, s));
       }
     });
-    nlohmann::ordered_json j;
-    j["material"] = material.name;
-    j["spacing"] = h;
-    j["horizon"] = delta;
-    j["bulk_modulus"] = K;
-    j["micromodulus"] = c;
-    j["fracture_energy"] = G_c;
-    j["critical_stretch"] = s_c;
-    j["yield_stretch"] = law.yield_stretch;
-    j["softening"] = law.softening;
-    j["break_stretch"] = law.break_stretch();
-    j["work_per_micromodulus_bulk"] = pd::work_of_fracture(curve) * s_c * s_c;
-    j["work_per_micromodulus_fitted"] = pd::interface_work(law);
-    io::write_atomically(folder / "fit.json", [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+    studies::write_bulk_fracture_fit(
+        folder / "fit.json",
+        {material.name, h, delta, K, c, G_c, s_c, law.yield_stretch, law.softening,
+         law.break_stretch(), pd::work_of_fracture(curve) * s_c * s_c, pd::interface_work(law)});
     std::cout << fmt::format(
         "{} at {:.4g} um spacing, horizon {:.4g} um: G_c {:.4g} J/m^2, critical stretch s_c "
         "{:.5g} (eq 23)\nfitted (eq 24): yield stretch s_y {:.5g}, softening m {:.5g}, breaks at "

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -20,13 +19,13 @@
 #include "core/error.hpp"
 #include "geometry/shape.hpp"
 #include "io/atomic_file.hpp"
-#include "io/json_number.hpp"
 #include "run/checkpoints.hpp"
 #include "run/deposit_measures.hpp"
 #include "run/interrupt.hpp"
 #include "setups/deposit_case.hpp"
 #include "setups/deposit_file.hpp"
 #include "setups/deposit_limits.hpp"
+#include "studies/deposit_json.hpp"
 
 namespace coldspray::cli {
 
@@ -62,14 +61,7 @@ void check_same_particles(const case_file::Case& c, const studies::Placement& pl
                                  file));
 }
 
-struct ParticleRow {
-  std::string name;
-  const studies::PlacedParticle* placed = nullptr;
-  const metrics::BodyMetrics* body = nullptr;
-  double sprayed_mass = 0.0;                                    // kg, departed points included
-  double bonded_to_particles = 0.0, bonded_to_substrate = 0.0;  // m^2
-  bool bonded = false;
-};
+using studies::ParticleRow;
 
 std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
                                        const run::Summary& summary) {
@@ -90,49 +82,6 @@ std::vector<ParticleRow> particle_rows(const studies::Placement& placement,
     rows.push_back(r);
   }
   return rows;
-}
-
-void write_deposit_json(const std::filesystem::path& path, const setups::DepositFile& file,
-                        const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit) {
-  const metrics::DepositShape& shape = deposit.shape;
-  nlohmann::ordered_json j;
-  j["name"] = file.name;
-  j["seed"] = file.plan.seed;
-  j["patch"] = file.plan.patch;
-  j["deposition_efficiency"] = deposit.efficiency;
-  j["porosity"] = shape.porosity;
-  j["mean_thickness"] = shape.mean_thickness;
-  j["max_thickness"] = shape.max_thickness;
-  j["coverage"] = shape.coverage;
-  j["voxel"] = file.voxel;
-  nlohmann::ordered_json particles = nlohmann::ordered_json::array();
-  for (const ParticleRow& r : rows) {
-    const metrics::ImpactMeasures& m = r.body->impact;
-    particles.push_back(
-        {{"name", r.name},
-         {"diameter", r.placed->diameter},
-         {"speed", r.placed->speed},
-         {"arrival", r.placed->arrival},
-         {"centre", r.placed->centre},
-         {"verdict", r.body->verdict ? std::string(metrics::outcome_name(r.body->verdict->outcome))
-                                     : std::string("none")},
-         {"cor", io::json_number(m.cor)},
-         {"v_rest", io::json_number(m.v_rest)},
-         {"pbcp", m.pbcp},
-         {"flattening_ratio", m.flattening_ratio},
-         {"bonded_area", m.bonded_area},
-         {"bonded_area_to_particles", r.bonded_to_particles},
-         {"bonded_area_to_substrate", r.bonded_to_substrate},
-         {"jetted_fraction", m.jetted_fraction},
-         {"sprayed_mass", r.sprayed_mass}});
-  }
-  j["particles"] = particles;
-  // The deposit's top above the substrate's first surface per voxel column, x fastest: the
-  // thickness map the picture draws.
-  j["thickness_map"] = {{"columns_x", shape.columns[0]},
-                        {"columns_y", shape.columns[1]},
-                        {"values", shape.thickness}};
-  io::write_atomically(path, [&](std::ostream& out) { out << j.dump(1) << "\n"; });
 }
 
 void print_deposit(const std::vector<ParticleRow>& rows, const run::DepositMeasures& deposit,
@@ -189,7 +138,8 @@ void report_deposit(const setups::DepositFile& file, const studies::Placement& p
     bonded.push_back(r.bonded);
   }
   const run::DepositMeasures measures = measure_deposit(file, c, report.out_dir, masses, bonded);
-  write_deposit_json(report.out_dir / "deposit.json", file, rows, measures);
+  studies::write_deposit_json(report.out_dir / "deposit.json",
+                              {file.name, file.plan, file.voxel, rows, measures});
   print_deposit(rows, measures, std::cout);
   std::cout << fmt::format(
       "picture: /usr/bin/python3 tools/coldspray_plot.py deposit {} --out {}\n",

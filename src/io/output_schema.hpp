@@ -4,11 +4,15 @@
 // declared order, so the bytes depend only on the declaration.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "io/atomic_file.hpp"
 
 namespace coldspray::io {
 
@@ -23,6 +27,9 @@ struct OutputField {
 
 template <class T>
 using OutputFields = std::vector<OutputField<T>>;
+
+// Fields' dotted names with their units, in written order: a docs/outputs.md table's rows.
+using FieldUnits = std::vector<std::pair<std::string, std::string>>;
 
 // The fields of `t`, in declared order; a field whose value is discarded (a JSON "discarded"
 // value) is left out, for the fields only one solver has.
@@ -43,9 +50,25 @@ inline nlohmann::ordered_json absent_field() {
 
 // Each field's dotted name under `prefix` and its unit, for the docs' field tables.
 template <class T>
-void append_field_units(const OutputFields<T>& fields, const std::string& prefix,
-                        std::vector<std::pair<std::string, std::string>>& out) {
+void append_field_units(const OutputFields<T>& fields, const std::string& prefix, FieldUnits& out) {
   for (const OutputField<T>& f : fields) out.emplace_back(prefix + f.name, f.unit);
+}
+
+// The fields of `t` as the file at `path` (written atomically), indented by `indent` spaces, with
+// a final newline.
+template <class T>
+void write_fields_file(const std::filesystem::path& path, const OutputFields<T>& fields, const T& t,
+                       int indent = 2) {
+  const nlohmann::ordered_json j = write_fields(fields, t);
+  write_atomically(path, [&](std::ostream& out) { out << j.dump(indent) << "\n"; });
+}
+
+// The fields' names and units, for a file of one level.
+template <class T>
+FieldUnits field_units(const OutputFields<T>& fields) {
+  FieldUnits out;
+  append_field_units(fields, "", out);
+  return out;
 }
 
 }  // namespace coldspray::io

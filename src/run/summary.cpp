@@ -2,10 +2,8 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <ostream>
 #include <vector>
 
-#include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/output_schema.hpp"
 
@@ -177,8 +175,8 @@ const io::OutputFields<Summary>& summary_fields() {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string>> summary_field_units() {
-  std::vector<std::pair<std::string, std::string>> out;
+io::FieldUnits summary_field_units() {
+  io::FieldUnits out;
   io::append_field_units(summary_fields(), "", out);
   io::append_field_units(solver_fields(), "solver.", out);
   io::append_field_units(energy_fields(), "energy.", out);
@@ -190,8 +188,7 @@ std::vector<std::pair<std::string, std::string>> summary_field_units() {
 }
 
 void write_summary_json(const Summary& s, const std::filesystem::path& path) {
-  const Json j = io::write_fields(summary_fields(), s);
-  io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  io::write_fields_file(path, summary_fields(), s);
 }
 
 }  // namespace coldspray::run

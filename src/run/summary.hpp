@@ -35,8 +35,8 @@ struct Summary {
 
 void write_summary_json(const Summary& s, const std::filesystem::path& path);
 
-// summary.json's fields as dotted names ("energy.kinetic", "bodies.<name>.mass") with their
-// units, in written order: docs/outputs.md's table lists the same (tests/run/summary_fields_test).
+// summary.json's fields as dotted names ("energy.kinetic", "bodies.<name>.mass") with units, in
+// written order: docs/outputs.md's table lists the same (tests/run/output_fields_test.cpp).
 std::vector<std::pair<std::string, std::string>> summary_field_units();
 
 }  // namespace coldspray::run

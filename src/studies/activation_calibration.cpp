@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
+#include "studies/calibration_json.hpp"
 #include "studies/case_runner.hpp"
 
 namespace coldspray::studies {
@@ -95,27 +96,6 @@ double measured_penetration(const fs::path& folder, std::string& status) {
   return p.value("penetration", NAN);
 }
 
-nlohmann::json result_json(const ActivationPlan& plan, const ActivationGridResult& r) {
-  nlohmann::json sizes = nlohmann::json::array();
-  for (std::size_t s = 0; s < plan.sizes.size(); ++s) {
-    const PenetrationLaw& l = r.laws[s];
-    auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
-    const double v_c = plan.sizes[s].velocity;
-    const double predicted = s < r.predicted.size() ? r.predicted[s] : NAN;
-    sizes.push_back({{"diameter_um", plan.sizes[s].diameter * 1e6},
-                     {"velocity_ms", v_c},
-                     {"penetration", finite(l.at_velocity)},
-                     {"exponent", finite(l.exponent)},
-                     {"predicted_vcrit_ms", finite(predicted)},
-                     {"error", finite(predicted / v_c - 1.0)}});
-  }
-  return {{"grid", r.grid},
-          {"critical_penetration",
-           r.critical_penetration ? nlohmann::json(*r.critical_penetration) : nlohmann::json()},
-          {"sizes", sizes},
-          {"diagnosis", r.diagnosis}};
-}
-
 }  // namespace
 
 std::vector<ActivationGridResult> analyse_activation(const ActivationPlan& plan,
@@ -135,7 +115,6 @@ std::vector<ActivationGridResult> analyse_activation(const ActivationPlan& plan,
     }
   });
   std::vector<ActivationGridResult> results(plan.grids.size());
-  nlohmann::json grids = nlohmann::json::array();
   for (std::size_t g = 0; g < plan.grids.size(); ++g) {
     ActivationGridResult& r = results[g];
     r.grid = plan.grids[g];
@@ -153,14 +132,8 @@ std::vector<ActivationGridResult> analyse_activation(const ActivationPlan& plan,
         r.predicted.push_back(
             predicted_vcrit(r.laws[s], plan.sizes[s].velocity, *r.critical_penetration));
     }
-    grids.push_back(result_json(plan, r));
   }
-  const nlohmann::json j = {{"name", name},
-                            {"calibrates", "bonding.critical_penetration"},
-                            {"step", plan.step},
-                            {"grids", grids}};
-  io::write_atomically(out_dir / "calibration.json",
-                       [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  write_activation_json(plan, results, out_dir, name);
   return results;
 }
 

@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/output_folder.hpp"
 #include "run/bond_family.hpp"
+#include "studies/calibration_json.hpp"
 #include "studies/case_runner.hpp"
 #include "studies/decision_boundary.hpp"
 #include "studies/task_pool.hpp"
@@ -210,36 +211,6 @@ Measured measure(const fs::path& folder) {
   return m;
 }
 
-nlohmann::json classification_json(const Classification& c) {
-  switch (c.by) {
-    case Classification::By::CorPbcp:
-      return {{"by", "cor-pbcp"}, {"cor_max", c.cor_max}, {"pbcp_min", c.pbcp_min}};
-    case Classification::By::CorAbp:
-      return {{"by", "cor-abp"}, {"cor_max", c.cor_max}, {"abp_min", c.abp_min}};
-    case Classification::By::Verdict:
-      break;
-  }
-  return {{"by", "verdict"}};
-}
-
-nlohmann::json fit_json(const LogisticFit& f) {
-  auto vector = [](const Eigen::VectorXd& v) {
-    return std::vector<double>(v.data(), v.data() + v.size());
-  };
-  return {{"degree", f.degree},
-          {"theta", vector(f.theta)},
-          {"theta_unstandardized", vector(f.theta_unstandardized())},
-          {"transform",
-           {f.scaling.transform[0] == InputTransform::Log10 ? "log10" : "identity",
-            f.scaling.transform[1] == InputTransform::Log10 ? "log10" : "identity"}},
-          {"mean", {f.scaling.mean[0], f.scaling.mean[1]}},
-          {"scale", {f.scaling.scale[0], f.scaling.scale[1]}},
-          {"accuracy", f.accuracy},
-          {"iterations", f.iterations},
-          {"converged", f.converged},
-          {"cost", f.cost}};
-}
-
 // The parameter rectangle [lo1, hi1] x [lo2, hi2] of the plan's two axes.
 struct Rectangle {
   double lo1, hi1, lo2, hi2;
@@ -347,71 +318,6 @@ void intersect_sizes(const CalibrationPlan& plan, const std::vector<Boundary>& b
         "midpoint of that closest approach, a compromise",
         gr.closest->distance);
   }
-}
-
-nlohmann::json axis_json(const ParameterAxis& a) {
-  return nlohmann::json{{"key", a.key},
-                        {"unit", a.unit},
-                        {"from", a.from},
-                        {"to", a.to},
-                        {"count", a.count},
-                        {"spacing", a.log ? "log" : "linear"},
-                        {"values", parameter_values(a)}};
-}
-
-nlohmann::json size_json(const CalibrationSize& size, const SizeResult& r) {
-  return nlohmann::json{
-      {"size", size.label()},
-      {"diameter_um", size.diameter * 1e6},
-      {"velocity_ms", size.velocity},
-      {"classify", classification_json(size.classify)},
-      {"runs", r.runs},
-      {"bonded", r.bonded},
-      {"not_bonded", r.not_bonded},
-      {"undecided", r.undecided},
-      {"failed", r.failed},
-      {"fit", r.fit ? fit_json(*r.fit) : nlohmann::json()},
-      {"boundary_csv",
-       r.boundary_file.empty() ? nlohmann::json() : nlohmann::json(r.boundary_file)},
-      {"diagnosis", r.diagnosis.empty() ? nlohmann::json() : nlohmann::json(r.diagnosis)}};
-}
-
-nlohmann::json grid_json(const CalibrationPlan& plan, const GridResult& gr) {
-  nlohmann::json gj = {{"grid", gr.grid}, {"sizes", nlohmann::json::array()}};
-  for (std::size_t s = 0; s < plan.sizes.size(); ++s)
-    gj["sizes"].push_back(size_json(plan.sizes[s], gr.sizes[s]));
-  gj["intersections"] = nlohmann::json::array();
-  for (const auto& p : gr.intersections)
-    gj["intersections"].push_back({{plan.x1.key, p[0]}, {plan.x2.key, p[1]}});
-  gj["calibrated"] = gr.calibrated ? nlohmann::json{{plan.x1.key, (*gr.calibrated)[0]},
-                                                    {plan.x2.key, (*gr.calibrated)[1]}}
-                                   : nlohmann::json();
-  const auto point_json = [&plan](const Eigen::Vector2d& x) {
-    return nlohmann::json{{plan.x1.key, x[0]}, {plan.x2.key, x[1]}};
-  };
-  gj["closest_approach"] =
-      gr.closest ? nlohmann::json{{"on_" + plan.sizes[0].label(), point_json(gr.closest->on_a)},
-                                  {"on_" + plan.sizes[1].label(), point_json(gr.closest->on_b)},
-                                  {"distance", gr.closest->distance}}
-                 : nlohmann::json();
-  gj["calibrated_by"] = !gr.calibrated             ? nlohmann::json()
-                        : gr.intersections.empty() ? nlohmann::json("closest approach")
-                                                   : nlohmann::json("intersection");
-  gj["diagnosis"] = gr.diagnosis.empty() ? nlohmann::json() : nlohmann::json(gr.diagnosis);
-  return gj;
-}
-
-// Write: calibration.json, the plan's axes and fit options and each grid's sizes and result.
-void write_calibration_json(const CalibrationPlan& plan, const std::vector<GridResult>& results,
-                            const fs::path& out_dir, const std::string& name) {
-  nlohmann::json j;
-  j["name"] = name;
-  j["parameters"] = {{"x1", axis_json(plan.x1)}, {"x2", axis_json(plan.x2)}};
-  j["fit_options"] = {{"ridge", plan.fit.ridge}, {"degree", plan.fit.degree}};
-  j["grids"] = nlohmann::json::array();
-  for (const GridResult& gr : results) j["grids"].push_back(grid_json(plan, gr));
-  io::write_atomically(out_dir / "calibration.json",
-                       [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/output_schema.hpp"
 #include "studies/case_runner.hpp"
 
 namespace coldspray::studies {
@@ -255,18 +256,40 @@ std::optional<LinearFit> fit_vcrit(const std::vector<VcritRow>& rows) {
   return fit_line(d, v);
 }
 
-void write_vcrit_fit(const fs::path& path, const LinearFit& fit) {
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
-  const nlohmann::json j = {
-      {"model", "vcrit = a + b d"},
-      {"units", {{"d", "um"}, {"vcrit", "m/s"}, {"a", "m/s"}, {"b", "m/s/um"}}},
-      {"a", fit.a},
-      {"b", fit.b},
-      {"r_squared", finite(fit.r_squared)},
-      {"se_a", finite(fit.se_a)},
-      {"se_b", finite(fit.se_b)},
-      {"n", fit.n}};
-  io::write_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The line's coefficients' units, d in um and vcrit in m/s: in the fields' declaration and in
+// the file's own "units".
+constexpr const char* kInterceptUnit = "m/s";
+constexpr const char* kSlopeUnit = "m/s/um";
+
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(); }
+
+// In the order vcrit_fit.json has always had, alphabetical (it was written from nlohmann::json's
+// sorted map).
+const io::OutputFields<LinearFit>& vcrit_fit_fields() {
+  static const io::OutputFields<LinearFit> fields = {
+      {"a", kInterceptUnit, [](const auto& f) { return Json(f.a); }},
+      {"b", kSlopeUnit, [](const auto& f) { return Json(f.b); }},
+      {"model", "-", [](const auto&) { return Json("vcrit = a + b d"); }},
+      {"n", "-", [](const auto& f) { return Json(f.n); }},
+      {"r_squared", "-", [](const auto& f) { return finite_or_null(f.r_squared); }},
+      {"se_a", kInterceptUnit, [](const auto& f) { return finite_or_null(f.se_a); }},
+      {"se_b", kSlopeUnit, [](const auto& f) { return finite_or_null(f.se_b); }},
+      {"units", "-", [](const auto&) {
+         return Json{{"a", kInterceptUnit}, {"b", kSlopeUnit}, {"d", "um"}, {"vcrit", "m/s"}};
+       }}};
+  return fields;
 }
+
+}  // namespace
+
+void write_vcrit_fit(const fs::path& path, const LinearFit& fit) {
+  io::write_fields_file(path, vcrit_fit_fields(), fit);
+}
+
+io::FieldUnits vcrit_fit_field_units() { return io::field_units(vcrit_fit_fields()); }
 
 }  // namespace coldspray::studies

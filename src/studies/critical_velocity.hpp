@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "case/case.hpp"
+#include "io/output_schema.hpp"
 #include "studies/bisection.hpp"
 #include "studies/linear_fit.hpp"
 
@@ -77,7 +78,11 @@ void write_vcrit_runs_csv(const std::filesystem::path& out_dir,
 // vcrit = a + b d over the diameters whose search found a threshold, d in um and vcrit in m/s;
 // nullopt with fewer than two.
 std::optional<LinearFit> fit_vcrit(const std::vector<VcritRow>& rows);
-// The fit as JSON: a, b, r_squared, se_a, se_b, n, and the units.
+// The fit as JSON (vcrit_fit.json): a, b, r_squared, se_a, se_b, n, and the units.
 void write_vcrit_fit(const std::filesystem::path& path, const LinearFit& fit);
+
+// vcrit_fit.json's fields with their units, in written order: docs/outputs.md's table lists the
+// same (tests/run/output_fields_test.cpp).
+io::FieldUnits vcrit_fit_field_units();
 
 }  // namespace coldspray::studies

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -14,6 +13,7 @@
 #include "run/interface_areas.hpp"
 #include "run/run.hpp"
 #include "run/solver.hpp"
+#include "studies/pull_off_fields.hpp"
 
 namespace coldspray::studies {
 namespace {
@@ -96,22 +96,7 @@ void write_results(const PullOffOptions& o, const PullOffResult& r, const std::s
     for (std::size_t k = 0; k < r.force.size(); ++k)
       out << fmt::format("{:.10g},{:.10g}\n", r.displacement[k], r.force[k]);
   });
-  nlohmann::ordered_json j;
-  j["impact"] = o.impact.string();
-  j["body"] = body;
-  j["direction"] = {direction.x(), direction.y(), direction.z()};
-  j["speed"] = o.speed;
-  j["peak_force"] = r.peak_force;
-  j["peak_displacement"] = r.peak_displacement;
-  j["work_of_separation"] = r.work;
-  j["final_force"] = r.final_force;
-  j["separated"] = r.separated;
-  j["bonded_area"] = r.bonded_area;
-  j["projected_area"] = r.projected_area;
-  j["strength_bonded"] = r.bonded_area > 0.0 ? r.peak_force / r.bonded_area : 0.0;
-  j["strength_projected"] = r.projected_area > 0.0 ? r.peak_force / r.projected_area : 0.0;
-  io::write_atomically(o.out / "summary.json",
-                       [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  write_pull_off_summary(o.out / "summary.json", PullOffSummary{o, r, body, direction});
 }
 
 }  // namespace
