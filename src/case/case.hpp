@@ -138,7 +138,7 @@ struct PeridynamicsContact {
   // Contact model 2 (PD paper eqs 23-25): the interface's fracture energy G_c, J/m^2, unset the
   // sum of the two materials' surface energies (the work of separating the metallic bond); the
   // critical stretch follows by eq 23, and the yield stretch s_y and softening m, unset, by the
-  // fit of eq 24 to the bulk-fracture test (pd/bulk_fracture.hpp).
+  // fit of eq 24 to the bulk-fracture test (pd/laws/bulk_fracture.hpp).
   std::optional<double> fracture_energy;
   std::optional<double> yield_stretch;  // s_y
   std::optional<double> softening;      // m

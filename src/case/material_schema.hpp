@@ -9,6 +9,7 @@
 #include "case/codecs.hpp"
 #include "case/field_rules.hpp"
 #include "core/units.hpp"
+#include "core/variant_names.hpp"
 #include "materials/material.hpp"
 
 namespace coldspray::case_file {
@@ -18,11 +19,12 @@ inline constexpr std::array<std::string_view, 10> kMaterialGroups{
     "density", "elastic",       "strength",       "shear_modulus_model",  "melt",
     "eos",     "specific_heat", "taylor_quinney", "thermal_conductivity", "surface_energy"};
 
-inline constexpr std::array<std::string_view, 4> kStrengthModels{"elastic", "von-mises",
-                                                                 "johnson-cook", "ptw"};
-inline constexpr std::array<std::string_view, 2> kShearModulusModels{"constant", "mts"};
-inline constexpr std::array<std::string_view, 2> kMeltModels{"constant", "scg"};
-inline constexpr std::array<std::string_view, 2> kEosModels{"linear", "mie-gruneisen"};
+// Each model's `model:` names, the kName of the variant's alternatives in its order: io.variant
+// matches a name to the alternative at its position.
+inline constexpr auto kStrengthModels = variant_names<materials::strength::Model>();
+inline constexpr auto kShearModulusModels = variant_names<materials::shear_modulus::Model>();
+inline constexpr auto kMeltModels = variant_names<materials::melt::Model>();
+inline constexpr auto kEosModels = variant_names<materials::eos::Model>();
 
 // The other way to give `elastic:`, converted to shear and bulk moduli when read.
 struct YoungsPoisson {

@@ -1,7 +1,8 @@
 // `coldspray bulk-fracture`: the numerical bulk-fracture test of the PD paper's contact model 2
-// (pd/bulk_fracture.hpp) for one material and spacing, and the fit of eq 24 to it: the constants
-// an impact with `contact.peridynamics.model: interface-bonds` uses unless its case gives them.
-#include "pd/bulk_fracture.hpp"
+// (pd/laws/bulk_fracture.hpp) for one material and spacing, and the fit of eq 24 to it: the
+// constants an impact with `contact.peridynamics.model: interface-bonds` uses unless its case gives
+// them.
+#include "pd/laws/bulk_fracture.hpp"
 
 #include <fmt/format.h>
 

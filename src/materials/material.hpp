@@ -1,10 +1,12 @@
 // A material as a composition of independent sub-models (strength, shear modulus, melting
-// temperature, equation of state, heating), each a plain parameter struct chosen by name.
+// temperature, equation of state, heating), each a plain parameter struct chosen by name: its
+// kName, which the material schema's lists of names are made of (case/material_schema.hpp).
 // All values SI. The kernels that use these live beside them (strength/, shear_modulus/, ...).
 #pragma once
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <variant>
 
 namespace coldspray::materials {
@@ -17,15 +19,19 @@ struct Elastic {
 
 namespace strength {
 // No plasticity: the deviatoric response stays elastic.
-struct Elastic {};
+struct Elastic {
+  static constexpr std::string_view kName = "elastic";
+};
 // J2 plasticity with linear isotropic hardening: sigma_y = yield_stress + H eqps.
 struct VonMises {
+  static constexpr std::string_view kName = "von-mises";
   double yield_stress = 0.0;       // Pa
   double hardening_modulus = 0.0;  // H, Pa
 };
 // Johnson-Cook (thesis eq 2.3): (A + B eps^n)(1 + C ln(rate/rate0))(1 - T*^m),
 // T* = (T - T_ref)/(T_m - T_ref) with T_m from the material's melt model.
 struct JohnsonCook {
+  static constexpr std::string_view kName = "johnson-cook";
   double A = 0.0;                        // Pa
   double B = 0.0;                        // Pa
   double n = 1.0;                        // -
@@ -37,6 +43,7 @@ struct JohnsonCook {
 // Preston-Tonks-Wallace (thesis eqs 2.4-2.8; Preston, Tonks & Wallace, J. Appl. Phys. 93 (2003)
 // 211). Dimensionless except atomic_mass. `s1` is the overdriven-shock exponent (PTW's beta).
 struct Ptw {
+  static constexpr std::string_view kName = "ptw";
   double theta = 0.0;        // strain hardening rate
   double p = 0.0;            // strain hardening constant (thesis "d")
   double s0 = 0.0;           // saturation stress at 0 K
@@ -55,9 +62,12 @@ using Model = std::variant<Elastic, VonMises, JohnsonCook, Ptw>;
 
 namespace shear_modulus {
 // G from the material's elastic constants at all temperatures.
-struct Constant {};
+struct Constant {
+  static constexpr std::string_view kName = "constant";
+};
 // Mechanical Threshold Stress form (thesis eq 2.6): mu(T) = mu0 - D / (exp(T0/T) - 1).
 struct Mts {
+  static constexpr std::string_view kName = "mts";
   double mu0 = 0.0;  // Pa, shear modulus at 0 K
   double D = 0.0;    // Pa
   double T0 = 0.0;   // K
@@ -67,10 +77,12 @@ using Model = std::variant<Constant, Mts>;
 
 namespace melt {
 struct Constant {
+  static constexpr std::string_view kName = "constant";
   double temperature = 0.0;  // K
 };
 // Steinberg-Cochran-Guinan (thesis eq 2.9; Steinberg et al., J. Appl. Phys. 51 (1980) 1498).
 struct Scg {
+  static constexpr std::string_view kName = "scg";
   double Tm0 = 0.0;     // K, fit constant at eta = 1
   double a = 0.0;       // first-order volume correction to Gruneisen's gamma
   double gamma0 = 0.0;  // Gruneisen gamma at the reference state
@@ -80,9 +92,12 @@ using Model = std::variant<Constant, Scg>;
 
 namespace eos {
 // p = K mu, mu = rho/rho0 - 1, with K the material's bulk modulus.
-struct Linear {};
+struct Linear {
+  static constexpr std::string_view kName = "linear";
+};
 // Mie-Gruneisen with a linear Us-up Hugoniot reference (thesis §3.5.2, eqs 3.39-3.43).
 struct MieGruneisen {
+  static constexpr std::string_view kName = "mie-gruneisen";
   double c0 = 0.0;      // m/s, bulk sound speed (Us intercept)
   double s = 0.0;       // Us-up slope
   double gamma0 = 0.0;  // Gruneisen gamma

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pd/laws/interface_bonds.hpp"
+
 namespace coldspray::pd {
 
 bool ContactList::stale(const Neighbours& P) const {

@@ -1,6 +1,7 @@
-// Contact between bodies in peridynamics: the short-range repulsive force between points of
-// different bodies (Silling and Askari 2005, §"short-range forces"; Parks et al., Comput. Phys.
-// Commun. 179 (2008) 777, as LAMMPS's PERI package implements it): a point pair closer than the
+// Contact between bodies in peridynamics: the pairs of points of different bodies that a contact
+// law (pd/laws/registry.hpp) acts on. By default the law is the short-range repulsion (Silling and
+// Askari 2005, §"short-range forces"; Parks et al., Comput. Phys. Commun. 179 (2008) 777, as
+// LAMMPS's PERI package implements it, pd/laws/repulsive.hpp): a point pair closer than the
 // contact distance d pushes apart with force density
 //   f = k_c c (d - r) / delta V_j  along the line between them,
 // c = 18 K / (pi delta^4) the bond micromodulus, d = min(1.35 h, 0.9 |X_i - X_j|) by default:
@@ -8,9 +9,10 @@
 // stretched (its largest hole, at a cube's centre, is 0.87 h from the corners at rest), and 0.9
 // of the initial distance lets bodies start closer than that without a push. The pairs are found in
 // the current configuration with a cell list, kept with a skin and rebuilt once some point has
-// moved half the skin since the last build. The PD paper's contact models 1 (pd/lennard_jones.hpp)
-// and 2 (pd/interface_bonds.hpp) are other force laws on these same pairs; model 2's bonds keep
-// their largest stretch beside the list, carried over when it is rebuilt.
+// moved half the skin since the last build. The PD paper's contact models 1
+// (pd/laws/lennard_jones.hpp) and 2 (pd/laws/interface_bonds.hpp) are other force laws on these
+// same pairs; model 2's bonds keep their largest stretch beside the list, carried over when it is
+// rebuilt.
 #pragma once
 
 #include <array>
@@ -18,8 +20,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "pd/interface_bonds.hpp"
-#include "pd/lennard_jones.hpp"
 #include "pd/neighbours.hpp"
 
 namespace coldspray::pd {
@@ -51,25 +51,6 @@ struct ContactList {
 
  private:
   void carry_over_largest_stretch();
-};
-
-// The contact force law between points i and j (of different bodies), reaching `reach`.
-// Repulsive: contact distance d = min(distance, initial_fraction |X_i - X_j|), constant k_c c /
-// delta in N/m^7 (see above). Lennard-Jones (model 1): the pair's alpha is alpha_per_volumes V_i
-// V_j (eq 22), or alpha itself when the case gives it (alpha_per_volumes = 0). Interface bonds
-// (model 2): rest length d as the repulsion's, micromodulus c = 18 K / (pi delta^4) in N/m^6.
-struct ContactLaw {
-  enum class Kind { Repulsive, LennardJones, InterfaceBonds };
-  Kind kind = Kind::Repulsive;
-  double reach = 0.0;             // m: no force beyond
-  double distance = 0.0;          // m
-  double initial_fraction = 0.0;  // of the pair's distance at t = 0
-  double stiffness = 0.0;         // k_c c / delta, N/m^7
-  LennardJones lennard_jones;
-  double alpha_per_volumes = 0.0;  // J/m^6
-  double alpha = 0.0;              // J
-  InterfaceBondLaw interface;
-  double micromodulus = 0.0;  // N/m^6
 };
 
 }  // namespace coldspray::pd

@@ -2,41 +2,27 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <variant>
 
 #include "pd/control_along_flow.hpp"
 #include "pd/deformation.hpp"
-#include "pd/interface_bonds.hpp"
 #include "pd/quadratic_fit.hpp"
 #include "pd/tensor_field.hpp"
 
 namespace coldspray::pd {
 
-double contact_distance(const ContactLaw& law, const Neighbours& N, std::size_t i, std::size_t j) {
-  return std::min(law.distance, law.initial_fraction * (N.reference[i] - N.reference[j]).norm());
-}
-
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t candidate) {
   const Neighbours& N = s.neighbours;
   const std::size_t j = s.contact.other[candidate];
-  const ContactLaw& law = contact_law_between(s, i, j);
   const Eigen::Vector3d r = (N.position[i] - N.position[j]).head<3>();
   const double length = r.norm();
-  if (length >= law.reach || length == 0.0) return Eigen::Vector3d::Zero();
-  if (law.kind == ContactLaw::Kind::LennardJones) {
-    // Eq 16 over V_i: the force density on i.
-    const double alpha_over_V_i = law.alpha_per_volumes != 0.0 ? law.alpha_per_volumes * N.volume[j]
-                                                               : law.alpha / N.volume[i];
-    return alpha_over_V_i * force_per_alpha(law.lennard_jones, length) / length * r;
-  }
-  const double d = contact_distance(law, N, i, j);
-  if (law.kind == ContactLaw::Kind::InterfaceBonds) {
-    // Eqs 24-25: c f(s) V_j along the pair, with the bond's largest stretch.
-    const double f = force_per_micromodulus(law.interface, length / d - 1.0,
-                                            s.contact.largest_stretch[candidate]);
-    return law.micromodulus * f * N.volume[j] / length * r;
-  }
-  if (length >= d) return Eigen::Vector3d::Zero();
-  return law.stiffness * (d - length) * N.volume[j] / length * r;
+  // One dispatch per candidate pair to the law between their bodies, whose force inlines.
+  return std::visit(
+      [&](const auto& law) -> Eigen::Vector3d {
+        if (length >= law.reach || length == 0.0) return Eigen::Vector3d::Zero();
+        return law.force({N, s.contact, i, j, candidate}, r, length);
+      },
+      contact_law_between(s, i, j));
 }
 
 Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t j,
@@ -99,12 +85,9 @@ std::uint16_t adhesive_partner(const State& s, std::size_t i) {
   const Neighbours& N = s.neighbours;
   for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
     const std::size_t j = s.contact.other[c];
-    const ContactLaw& law = contact_law_between(s, i, j);
+    const ContactPair pair{N, s.contact, i, j, c};
     const bool holds =
-        law.kind == ContactLaw::Kind::InterfaceBonds
-            ? s.contact.largest_stretch[c] >= 0.0
-            : law.kind == ContactLaw::Kind::LennardJones &&
-                  (N.position[i] - N.position[j]).head<3>().squaredNorm() < law.reach * law.reach;
+        std::visit([&](const auto& law) { return law.holds(pair); }, contact_law_between(s, i, j));
     if (holds) return static_cast<std::uint16_t>(1 + N.body[j]);
   }
   return 0;

@@ -40,12 +40,8 @@ ForceDensity force_density(const State& s, std::size_t i);
 Eigen::Vector4d control_displacement(const State& s, std::size_t i, std::size_t j,
                                      std::size_t bond);
 
-// The pair's contact distance d = min(distance, initial_fraction |X_i - X_j|) (pd/contact.hpp):
-// where the repulsion starts, and contact model 2's rest length, m.
-double contact_distance(const ContactLaw& law, const Neighbours& N, std::size_t i, std::size_t j);
-
 // The contact force density on i from the `candidate`-th point of its contact list, by the law
-// between their bodies (pd/contact.hpp), N/m^3: zero beyond the law's reach.
+// between their bodies (pd/laws/registry.hpp), N/m^3: zero beyond the law's reach.
 Eigen::Vector3d contact_force(const State& s, std::size_t i, std::size_t candidate);
 
 // 1 + the body whose point holds i through an adhesive contact law, 0 if none (bodies::Points::

@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <variant>
 
 #include "bodies/grip.hpp"
 #include "bodies/seed_bodies.hpp"
 #include "case/located_error.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
-#include "pd/bulk_fracture.hpp"
 #include "pd/control_length.hpp"
 #include "pd/deformation.hpp"
 #include "pd/pair_forces.hpp"
@@ -60,61 +60,14 @@ void invert_moments(const case_file::Case& c, State& s) {
   }
 }
 
-// Contact model 2's law between bodies a and b (pd/interface_bonds.hpp): s_c from the interface's
-// fracture energy by eq 23, and s_y and m, unless the case gives them, from the fit of eq 24 to
-// the bulk-fracture test (pd/bulk_fracture.hpp), which is in units of s_c.
-InterfaceBondLaw interface_bond_law(const case_file::Case& c, const State& s, std::size_t a,
-                                    std::size_t b, double K, double delta) {
-  const case_file::PeridynamicsContact& contact = c.contact.peridynamics;
-  const double gamma_a = s.bodies[a].material.surface_energy;
-  const double gamma_b = s.bodies[b].material.surface_energy;
-  if (!contact.fracture_energy && (gamma_a <= 0.0 || gamma_b <= 0.0))
-    case_file::fail_at(
-        c, "contact.peridynamics.fracture_energy",
-        fmt::format("contact model 2 needs the interface's fracture energy: give "
-                    "contact.peridynamics.fracture_energy, or a surface_energy to materials "
-                    "'{}' and '{}' (then G_c = gamma_a + gamma_b)",
-                    s.bodies[a].material.name, s.bodies[b].material.name));
-  const double G_c = contact.fracture_energy.value_or(gamma_a + gamma_b);
-  const double s_c = critical_stretch(G_c, K, delta);
-  const InterfaceBondLaw fit = scaled_law(
-      fit_interface_law(bulk_fracture_curve(s.settings.horizon_factor, kBulkFractureSamples)), s_c);
-  return {contact.yield_stretch.value_or(fit.yield_stretch),
-          contact.softening.value_or(fit.softening)};
-}
-
-// The law between bodies a and b (pd/contact.hpp): lengths from the finer spacing, constants
-// from the softer material and the larger horizon, the same both ways.
+// The law between bodies a and b (pd/laws/registry.hpp): lengths from the finer spacing,
+// constants from the softer material and the larger horizon, the same both ways.
 ContactLaw contact_law(const case_file::Case& c, const State& s, std::size_t a, std::size_t b) {
-  const case_file::PeridynamicsContact& contact = c.contact.peridynamics;
-  const double delta = std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon);
-  const double K = std::min(s.bodies[a].material.elastic.bulk_modulus,
-                            s.bodies[b].material.elastic.bulk_modulus);
-  const double spacing = std::min(s.bodies[a].spacing, s.bodies[b].spacing);
-  ContactLaw law;
-  if (contact.model == case_file::ContactModel::LennardJones) {
-    law.kind = ContactLaw::Kind::LennardJones;
-    law.lennard_jones = {contact.r0 * spacing, contact.beta, contact.repulsion_exponent,
-                         contact.attraction_exponent, contact.cutoff * contact.r0 * spacing};
-    law.reach = law.lennard_jones.cutoff;
-    if (contact.alpha)
-      law.alpha = *contact.alpha;
-    else
-      law.alpha_per_volumes = alpha_per_volumes(law.lennard_jones, K, delta);
-    return law;
-  }
-  const double micromodulus = 18.0 * K / (std::numbers::pi * std::pow(delta, 4));
-  law.distance = law.reach = contact.repulsion.distance * spacing;
-  law.initial_fraction = contact.repulsion.initial_fraction;
-  if (contact.model == case_file::ContactModel::InterfaceBonds) {
-    law.kind = ContactLaw::Kind::InterfaceBonds;
-    law.micromodulus = micromodulus;
-    law.interface = interface_bond_law(c, s, a, b, K, delta);
-    law.reach = law.distance * (1.0 + law.interface.break_stretch());
-    return law;
-  }
-  law.stiffness = contact.repulsion.stiffness * micromodulus / delta;
-  return law;
+  return make_contact_law({c, s.settings, s.bodies[a].material, s.bodies[b].material,
+                           std::max(s.body_bonds[a].horizon, s.body_bonds[b].horizon),
+                           std::min(s.bodies[a].material.elastic.bulk_modulus,
+                                    s.bodies[b].material.elastic.bulk_modulus),
+                           std::min(s.bodies[a].spacing, s.bodies[b].spacing)});
 }
 
 // Model 1 pushes apart with a force that grows as (r0/r)^(m+1): bodies must start no closer
@@ -124,12 +77,12 @@ void check_initial_gap(const case_file::Case& c, const State& s) {
   for (std::size_t i = 0; i < N.real; ++i)
     for (std::size_t k = s.contact.begin[i]; k < s.contact.begin[i + 1]; ++k) {
       const std::size_t j = s.contact.other[k];
-      const ContactLaw& law = contact_law_between(s, i, j);
-      if (law.kind != ContactLaw::Kind::LennardJones) continue;
+      const auto* law = std::get_if<LennardJones>(&contact_law_between(s, i, j));
+      if (law == nullptr) continue;
       const double r = (N.position[i] - N.position[j]).head<3>().norm();
       // Closer than both r_e and the cut-off: pushed apart at t = 0.
-      const double r_e = equilibrium_distance(law.lennard_jones);
-      if (r < r_e && r < law.reach)
+      const double r_e = equilibrium_distance(law->potential);
+      if (r < r_e && r < law->reach)
         case_file::fail_at(
             c, "contact.peridynamics.model",
             fmt::format("bodies '{}' and '{}' start {:.4g} um apart (points {} and {}), closer "
@@ -251,18 +204,16 @@ void hold_faces(const case_file::Case& c, const std::vector<bodies::SeededBody>&
 void set_up_contact(const case_file::Case& c, State& s) {
   const Neighbours& N = s.neighbours;
   const std::size_t m = s.bodies.size();
-  double reach = 0.0;
   for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = 0; b < m; ++b) {
-      s.contact_law.push_back(contact_law(c, s, a, b));
-      reach = std::max(reach, s.contact_law.back().reach);
-    }
+    for (std::size_t b = 0; b < m; ++b) s.contact_law.push_back(contact_law(c, s, a, b));
   s.contact.skin = 0.5 * s.min_spacing;
-  s.contact.remembers_stretch =
-      c.contact.peridynamics.model == case_file::ContactModel::InterfaceBonds;
+  // Model 2's bonds keep their largest stretch beside the list (pd/laws/interface_bonds.hpp).
+  s.contact.remembers_stretch = std::any_of(
+      s.contact_law.begin(), s.contact_law.end(),
+      [](const ContactLaw& law) { return std::holds_alternative<InterfaceBonds>(law); });
   // An adhesive contact can hold a body: the verdict then reads the area it holds.
-  s.bonding = c.contact.peridynamics.model != case_file::ContactModel::Repulsive;
-  s.contact.build(N, reach + s.contact.skin);
+  s.bonding = any_adhesive(s.contact_law);
+  s.contact.build(N, largest_reach(s.contact_law) + s.contact.skin);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "pd/contact.hpp"
 #include "pd/deformation.hpp"
 #include "pd/families.hpp"
+#include "pd/laws/registry.hpp"
 #include "pd/neighbours.hpp"
 #include "pd/quadratic_fit.hpp"
 

@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "bodies/grip.hpp"
 #include "bodies/material_state.hpp"
@@ -220,7 +221,7 @@ void book_works(State& s, bool book_contact = true) {
         a.absorbed -= s.external_force[d][a.point] * P.velocity[d][a.point] * s.dt;
 }
 
-// Contact model 2 (pd/interface_bonds.hpp): each candidate pair's bond forms, remembers its
+// Contact model 2 (pd/laws/interface_bonds.hpp): each candidate pair's bond forms, remembers its
 // largest stretch or breaks, at the step's new positions, before the forces read it.
 void update_interface_bonds(State& s) {
   if (!s.contact.remembers_stretch) return;
@@ -229,12 +230,11 @@ void update_interface_bonds(State& s) {
   for (std::size_t i = 0; i < N.real; ++i)
     for (std::size_t c = s.contact.begin[i]; c < s.contact.begin[i + 1]; ++c) {
       const std::size_t j = s.contact.other[c];
-      const ContactLaw& law = contact_law_between(s, i, j);
-      if (law.kind != ContactLaw::Kind::InterfaceBonds) continue;
+      const auto* law = std::get_if<InterfaceBonds>(&contact_law_between(s, i, j));
+      if (law == nullptr) continue;
       const double r = (N.position[i] - N.position[j]).head<3>().norm();
       double& largest = s.contact.largest_stretch[c];
-      largest =
-          next_largest_stretch(law.interface, r / contact_distance(law, N, i, j) - 1.0, largest);
+      largest = next_largest_stretch(law->bond, law->stretch({N, s.contact, i, j, c}, r), largest);
     }
 }
 
@@ -257,9 +257,7 @@ void move(State& s) {
   drift(s);
   refresh_neighbours(s);
   if (s.contact.stale(s.neighbours)) {
-    double reach = 0.0;
-    for (const ContactLaw& law : s.contact_law) reach = std::max(reach, law.reach);
-    s.contact.build(s.neighbours, reach + s.contact.skin);
+    s.contact.build(s.neighbours, largest_reach(s.contact_law) + s.contact.skin);
   }
   update_interface_bonds(s);
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "pd/bulk_fracture.hpp"
+#include "pd/laws/bulk_fracture.hpp"
 #include "read_text.hpp"
 #include "run_command.hpp"
 #include "table.hpp"

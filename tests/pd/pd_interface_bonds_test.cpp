@@ -1,13 +1,14 @@
-// The PD paper's contact model 2 (pd/interface_bonds.hpp) against its equations 23-25 by hand,
-// and the bulk-fracture test it is fitted to (pd/bulk_fracture.hpp) against the continuum limit.
+// The PD paper's contact model 2 (pd/laws/interface_bonds.hpp) against its equations 23-25 by hand,
+// and the bulk-fracture test it is fitted to (pd/laws/bulk_fracture.hpp) against the continuum
+// limit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "pd/bulk_fracture.hpp"
-#include "pd/interface_bonds.hpp"
+#include "pd/laws/bulk_fracture.hpp"
+#include "pd/laws/interface_bonds.hpp"
 
 namespace coldspray::pd {
 namespace {

@@ -1,16 +1,16 @@
-// The PD paper's contact model 1 (pd/lennard_jones.hpp) against its equations 15-22, by hand.
+// The PD paper's contact model 1 (pd/laws/lennard_jones.hpp) against its equations 15-22, by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "pd/lennard_jones.hpp"
+#include "pd/laws/lennard_jones.hpp"
 
 namespace coldspray::pd {
 namespace {
 
 constexpr double kR0 = 1.32e-6;  // m: 1.1 spacings of 1.2 um
-const LennardJones kPaper{kR0, 0.005, 12.0, 6.0, 2.75 * kR0};
+const LennardJonesPotential kPaper{kR0, 0.005, 12.0, 6.0, 2.75 * kR0};
 
 TEST(LennardJones, EquilibriumDistanceIsEq17) {
   // r_e = r0 beta^(-1/6): 2.4183 r0 at beta = 0.005.
@@ -51,7 +51,7 @@ TEST(LennardJones, AlphaIsEq22AndGivesTheBondStiffnessAtEquilibrium) {
 
 TEST(LennardJones, OtherExponentsKeepTheirEquilibriumAndStiffness) {
   // m = 9, n = 3: r_e = r0 (6 beta / 9)^(-1/6), and the same bond stiffness at r_e.
-  const LennardJones lj{kR0, 0.02, 9.0, 3.0, 10.0 * kR0};
+  const LennardJonesPotential lj{kR0, 0.02, 9.0, 3.0, 10.0 * kR0};
   const double r_e = equilibrium_distance(lj);
   EXPECT_NEAR(r_e, kR0 * std::pow(6.0 * 0.02 / 9.0, -1.0 / 6.0), 1e-18);
   EXPECT_NEAR(force_per_alpha(lj, r_e), 0.0, 1e-9 / kR0);
@@ -69,7 +69,7 @@ TEST(LennardJones, OtherExponentsKeepTheirEquilibriumAndStiffness) {
 // proportional to h: half the spacing, half the work.
 double aligned_work_of_adhesion(double beta, double h) {
   const double K = 129e9;
-  const LennardJones lj{1.1 * h, beta, 12.0, 6.0, 2.75 * 1.1 * h};
+  const LennardJonesPotential lj{1.1 * h, beta, 12.0, 6.0, 2.75 * 1.1 * h};
   const double alpha = alpha_per_volumes(lj, K, 3.0 * h) * std::pow(h, 6);
   const int n = static_cast<int>(std::ceil(lj.cutoff / h)) + 1;
   auto energy = [&](double gap) {

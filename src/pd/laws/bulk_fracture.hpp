@@ -19,7 +19,7 @@
 
 #include <vector>
 
-#include "pd/interface_bonds.hpp"
+#include "pd/laws/interface_bonds.hpp"
 
 namespace coldspray::pd {
 

@@ -1,4 +1,4 @@
-#include "pd/bulk_fracture.hpp"
+#include "pd/laws/bulk_fracture.hpp"
 
 #include <Eigen/Core>
 #include <algorithm>
