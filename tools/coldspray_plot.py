@@ -800,8 +800,8 @@ def command_pbcp_velocity(options):
 
 def command_sweep(options):
     """A sweep's result column against its varied key, one line per sweep folder (e.g. per
-    impact speed: the PD paper's Fig 7 is particle.cor against contact.beta), or with --by one
-    line per value of another varied key of the same folders."""
+    impact speed: the PD paper's Fig 7 is particle.cor against contact.peridynamics.beta), or
+    with --by one line per value of another varied key of the same folders."""
     labels = run_labels(options.dirs, options.labels) if not options.by else None
     fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 4.0))
     lines = []  # (label, [(x, y)])
@@ -1140,7 +1140,7 @@ def build_parser():
     sweep = commands.add_parser("sweep", help="a sweep's column against its varied key "
                                               "(coldspray sweep; the PD paper's Fig 7)")
     sweep.add_argument("dirs", nargs="+", help="sweep output folders (sweep.csv), overlaid")
-    sweep.add_argument("--x", required=True, help="varied key, e.g. contact.beta")
+    sweep.add_argument("--x", required=True, help="varied key, e.g. contact.peridynamics.beta")
     sweep.add_argument("--y", required=True, help="result column, e.g. particle.cor")
     sweep.add_argument("--labels", help="legend labels, comma-separated (default folder names)")
     sweep.add_argument("--by", help="another varied key: one line per value of it "
