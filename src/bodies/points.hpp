@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -101,5 +102,11 @@ struct Points {
     for_each_named_array([&](const std::string&, auto& v) { f(v); });
   }
 };
+
+// The speed |v| of point p, m/s.
+inline double speed(const Points& P, std::size_t p) {
+  const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
 
 }  // namespace coldspray::bodies

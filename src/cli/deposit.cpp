@@ -31,7 +31,7 @@ namespace coldspray::cli {
 
 namespace {
 
-struct Options {
+struct DepositCommandOptions {
   std::string path, write_case, restart;
   RunFlags run;
 };
@@ -158,7 +158,7 @@ std::string deposit_restart_command(const std::string& deposit_file,
 }  // namespace
 
 void add_deposit(CLI::App& app) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<DepositCommandOptions>();
   auto* sub = app.add_subcommand(
       "deposit",
       "Spray many particles onto a substrate in one 3D run and measure the deposit "

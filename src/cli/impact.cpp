@@ -29,13 +29,13 @@ namespace {
 // What names the generated case in messages that no option accounts for.
 constexpr const char* kSource = "coldspray impact";
 
-struct Options {
+struct ImpactCommandOptions {
   ImpactCaseOptions impact;
   std::string diameter, velocity, write_case;
   RunFlags run;
 };
 
-setups::ImpactSpec make_spec(const Options& o, const CLI::App& sub) {
+setups::ImpactSpec make_spec(const ImpactCommandOptions& o, const CLI::App& sub) {
   return impact_spec(
       o.impact, parse_diameter("--diameter", o.diameter), parse_speed("--velocity", o.velocity),
       command_line(kSource, sub, {"--write-case", "--out", "--overwrite", "--threads", "--quiet"}));
@@ -109,7 +109,7 @@ void print_verdict(const case_file::Case& c, const run::Summary& s, std::ostream
 }  // namespace
 
 void add_impact(CLI::App& app) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<ImpactCommandOptions>();
   auto* sub = app.add_subcommand(
       "impact",
       "Run the thesis' single-particle test: a sphere hitting a cylindrical substrate at first "

@@ -28,7 +28,7 @@ namespace {
 
 constexpr const char* kSource = "coldspray vcrit";
 
-struct Options {
+struct VcritCommandOptions {
   ImpactCaseOptions impact;
   std::string diameters, vmin = "500m/s", vmax = "1200m/s", tol = "2m/s", out_dir;
   std::vector<std::string> sets;
@@ -63,7 +63,7 @@ std::string number_text(double x, const char* format) {
 }
 
 // The search's settings from the options; InputError at the option at fault.
-studies::VcritOptions vcrit_options(const Options& opt) {
+studies::VcritOptions vcrit_options(const VcritCommandOptions& opt) {
   studies::VcritOptions o;
   o.diameters = parse_diameters(opt.diameters);
   o.vmin = parse_speed("--vmin", opt.vmin);
@@ -105,7 +105,7 @@ void print_vcrit_table(const std::string& material, const studies::VcritOptions&
 }  // namespace
 
 void add_vcrit(CLI::App& app) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<VcritCommandOptions>();
   auto* sub = app.add_subcommand(
       "vcrit",
       "Critical velocity per particle size by bisection over the impact speed (thesis §5.2.2; "

@@ -17,11 +17,6 @@ std::array<int, 2> centres_within(double lo, double hi, double origin, double ed
           static_cast<int>(std::clamp<long>(last, 0, count))};
 }
 
-double speed(const bodies::Points& P, std::size_t p) {
-  return std::sqrt(P.velocity[0][p] * P.velocity[0][p] + P.velocity[1][p] * P.velocity[1][p] +
-                   P.velocity[2][p] * P.velocity[2][p]);
-}
-
 }  // namespace
 
 DepositVoxels voxelise_deposit(const bodies::Bodies& s, const std::vector<bool>& is_deposit,
@@ -29,7 +24,7 @@ DepositVoxels voxelise_deposit(const bodies::Bodies& s, const std::vector<bool>&
                                double speed_limit, double surface_z) {
   const bodies::Points& P = s.points;
   auto counted = [&](std::size_t b, std::size_t p) {
-    return b == substrate || (is_deposit[b] && speed(P, p) <= speed_limit);
+    return b == substrate || (is_deposit[b] && bodies::speed(P, p) <= speed_limit);
   };
   auto in_patch = [&](std::size_t p) {
     return std::abs(P.position[0][p]) - P.half_width[0][p] < 0.5 * patch[0] &&

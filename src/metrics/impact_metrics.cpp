@@ -28,11 +28,6 @@ double whole_body_factor(const bodies::Bodies& s, const bodies::BodyRange& r) {
   return factor;
 }
 
-double speed(const bodies::Points& P, std::size_t p) {
-  const double v[3] = {P.velocity[0][p], P.velocity[1][p], P.velocity[2][p]};
-  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
 }  // namespace
 
 RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body) {
@@ -42,7 +37,7 @@ RestAndBond rest_and_bond(const bodies::Bodies& s, std::size_t body) {
   for (std::size_t p = r.begin; p < r.end; ++p) {
     out.mass += P.mass[p];
     out.momentum_z += P.mass[p] * P.velocity[2][p];
-    if (speed(P, p) <= s.impact_metrics.rest_speed_limit) {
+    if (bodies::speed(P, p) <= s.impact_metrics.rest_speed_limit) {
       out.rest_mass += P.mass[p];
       out.rest_momentum_z += P.mass[p] * P.velocity[2][p];
     }

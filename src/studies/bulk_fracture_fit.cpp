@@ -8,7 +8,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // A stretch is dimensionless, and so is a work per micromodulus (c s^2 / c).
-const io::OutputFields<BulkFractureFit>& fit_fields() {
+const io::OutputFields<BulkFractureFit>& bulk_fracture_fit_fields() {
   static const io::OutputFields<BulkFractureFit> fields = {
       {"material", "-", [](const auto& f) { return Json(f.material); }},
       {"spacing", "m", [](const auto& f) { return Json(f.spacing); }},
@@ -28,9 +28,9 @@ const io::OutputFields<BulkFractureFit>& fit_fields() {
 }  // namespace
 
 void write_bulk_fracture_fit(const std::filesystem::path& path, const BulkFractureFit& fit) {
-  io::write_fields_file(path, fit_fields(), fit);
+  io::write_fields_file(path, bulk_fracture_fit_fields(), fit);
 }
 
-io::FieldUnits bulk_fracture_field_units() { return io::field_units(fit_fields()); }
+io::FieldUnits bulk_fracture_field_units() { return io::field_units(bulk_fracture_fit_fields()); }
 
 }  // namespace coldspray::studies

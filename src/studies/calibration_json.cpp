@@ -137,7 +137,7 @@ const char* transform_name(InputTransform t) {
   return t == InputTransform::Log10 ? "log10" : "identity";
 }
 
-const io::OutputFields<LogisticFit>& fit_fields() {
+const io::OutputFields<LogisticFit>& logistic_fit_fields() {
   static const io::OutputFields<LogisticFit> fields = {
       {"accuracy", "-", [](const auto& f) { return Json(f.accuracy); }},
       {"converged", "-", [](const auto& f) { return Json(f.converged); }},
@@ -174,7 +174,7 @@ const io::OutputFields<SizeEntry>& size_fields() {
       {"failed", "-", [](const auto& s) { return Json(s.result.failed); }},
       {"fit", "-",
        [](const auto& s) {
-         return s.result.fit ? io::write_fields(fit_fields(), *s.result.fit) : Json();
+         return s.result.fit ? io::write_fields(logistic_fit_fields(), *s.result.fit) : Json();
        }},
       {"not_bonded", "-", [](const auto& s) { return Json(s.result.not_bonded); }},
       {"runs", "-", [](const auto& s) { return Json(s.result.runs); }},
@@ -308,7 +308,7 @@ io::FieldUnits calibration_field_units() {
   io::append_field_units(point_fields(), "grids[].intersections[].", out);
   io::append_field_units(size_fields(), "grids[].sizes[].", out);
   io::append_field_units(classify_fields(), "grids[].sizes[].classify.", out);
-  io::append_field_units(fit_fields(), "grids[].sizes[].fit.", out);
+  io::append_field_units(logistic_fit_fields(), "grids[].sizes[].fit.", out);
   io::append_field_units(parameters_fields(), "parameters.", out);
   io::append_field_units(axis_fields(), "parameters.<x>.", out);
   return out;

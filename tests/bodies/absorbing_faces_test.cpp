@@ -11,6 +11,7 @@
 #include "bodies/seed_bodies.hpp"
 #include "elastic_case.hpp"
 #include "geometry/seeding.hpp"
+#include "units.hpp"
 
 namespace coldspray::bodies {
 namespace {
@@ -21,7 +22,7 @@ using testing::kPWave;
 using testing::kSWave;
 using testing::laid_out;
 
-constexpr double um = 1e-6;
+using coldspray::testing::um;
 constexpr double kFace = 0.25e-12;  // (0.5 um)^2, m^2
 
 // A 2 x 2 x 1 um slab of 4 x 4 x 2 points with the given absorbing faces.

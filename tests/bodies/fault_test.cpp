@@ -14,7 +14,7 @@ namespace coldspray::bodies {
 namespace {
 
 // Two bodies of two points; the substrate's second point (index 3) was point 7 at t = 0.
-Bodies two_bodies() {
+Bodies renumbered_pair() {
   Bodies s;
   s.points.resize(4);
   const std::uint32_t ids[] = {0, 1, 6, 7};
@@ -43,12 +43,12 @@ TEST(Fault, TheLowestPointAtFaultIsKeptWhateverTheOrder) {
 }
 
 TEST(Fault, APointIsNamedByItsBodyItsIndexAtTheStartWhereItIsAndWhen) {
-  EXPECT_EQ(describe_point(two_bodies(), 3),
+  EXPECT_EQ(describe_point(renumbered_pair(), 3),
             "body 'substrate', point 7 at (1.5, -0.25, 12) um, t = 2.5 ns");
 }
 
 TEST(Fault, ARecordedFaultIsRaisedAsARunFaultAndNoneIsNot) {
-  Bodies s = two_bodies();
+  Bodies s = renumbered_pair();
   EXPECT_NO_THROW(raise_recorded_fault(s));
   record_fault(s.fault, 3, "its stress is not finite");
   try {

@@ -10,13 +10,14 @@
 
 #include "core/error.hpp"
 #include "input_error.hpp"
+#include "units.hpp"
 
 namespace coldspray::bodies {
 namespace {
 
 using coldspray::testing::contains;
 using coldspray::testing::input_error;
-constexpr double um = 1e-6;
+using coldspray::testing::um;
 
 struct Site {
   double x, z;  // um

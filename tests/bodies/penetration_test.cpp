@@ -11,7 +11,7 @@ namespace {
 
 // A "particle" of three points 1 um apart along z (masses 1, 2, 1), moving down at 100 m/s, and
 // a one-point "substrate" at rest below it.
-Bodies two_bodies() {
+Bodies falling_column() {
   Bodies s;
   s.points.resize(4);
   const double z[] = {1e-6, 2e-6, 3e-6, -1e-6};
@@ -46,7 +46,7 @@ void step(Bodies& s, bool touching) {
 }
 
 TEST(Penetration, SizeAndDirectionFromTheBodyAtTheStart) {
-  const Bodies s = two_bodies();
+  const Bodies s = falling_column();
   const Penetration& p = s.bodies[0].penetration;
   EXPECT_DOUBLE_EQ(p.direction[2], -1.0);
   EXPECT_DOUBLE_EQ(p.size, 3e-6);                // 1 to 3 um, plus a spacing
@@ -55,7 +55,7 @@ TEST(Penetration, SizeAndDirectionFromTheBodyAtTheStart) {
 }
 
 TEST(Penetration, CountsTheCentroidsTravelFromTheFirstContactOverTheSize) {
-  Bodies s = two_bodies();
+  Bodies s = falling_column();
   move_particle(s, -0.5e-6);  // in flight: not counted
   step(s, false);
   EXPECT_LT(s.bodies[0].penetration.first_contact, 0.0);

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "elastic_case.hpp"
 #include "input_error.hpp"
+#include "units.hpp"
 
 namespace coldspray::bodies {
 namespace {
@@ -23,7 +24,7 @@ using testing::kPointMass;
 using testing::kPWave;
 using testing::laid_out;
 
-constexpr double um = 1e-6;
+using coldspray::testing::um;
 
 TEST(SeedBodies, ABoxHasAPointAtEveryLatticeSiteInsideItEachWithItsCubesMass) {
   // Sites at (i + 1/2) 0.5 um: 4 x 2 x 2 of them in a 2 x 1 x 1 um box.

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "elastic_case.hpp"
 #include "input_error.hpp"
+#include "units.hpp"
 
 namespace coldspray::bodies {
 namespace {
@@ -18,7 +19,7 @@ using testing::box;
 using testing::elastic_case;
 using testing::kPointMass;
 
-constexpr double um = 1e-6;
+using coldspray::testing::um;
 
 // A 2 x 2 x 1 um box centred on the z axis: 4 x 4 x 2 points at x, y = +-0.25, +-0.75 um.
 case_file::Case centred() {

@@ -11,6 +11,7 @@
 
 #include "read_text.hpp"
 #include "run_command.hpp"
+#include "source_paths.hpp"
 #include "table.hpp"
 #include "temp_dir.hpp"
 
@@ -18,8 +19,6 @@ namespace coldspray::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kData = COLDSPRAY_TEST_DATA;
-const std::string kExample = std::string(COLDSPRAY_SOURCE_DIR) + "/examples/al-14um-810.yaml";
 
 TEST(Cli, VersionPrintsTheProjectVersion) {
   const auto r = run_coldspray("--version");

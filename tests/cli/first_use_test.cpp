@@ -7,12 +7,12 @@
 #include <string>
 
 #include "run_command.hpp"
+#include "source_paths.hpp"
 #include "temp_dir.hpp"
 
 namespace coldspray::testing {
 namespace {
 
-const std::string kExample = std::string(COLDSPRAY_SOURCE_DIR) + "/examples/al-14um-810.yaml";
 const std::string kTaylorBar =
     std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/taylor-bar-axisymmetric.yaml";
 

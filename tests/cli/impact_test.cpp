@@ -22,12 +22,12 @@ namespace coldspray::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kExamples = fs::path(COLDSPRAY_SOURCE_DIR) / "examples" / "coldspray";
+const fs::path kCommandExamples = fs::path(COLDSPRAY_SOURCE_DIR) / "examples" / "coldspray";
 const std::string kCase22 = "impact --material al-ptw --diameter 22um --velocity 790m/s";
 
 std::vector<fs::path> example_files() {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(kExamples))
+  for (const auto& entry : fs::directory_iterator(kCommandExamples))
     if (entry.path().extension() == ".yaml") files.push_back(entry.path());
   return files;
 }

@@ -7,15 +7,13 @@
 #include <string>
 
 #include "run_command.hpp"
+#include "source_paths.hpp"
 #include "temp_dir.hpp"
 
 namespace coldspray::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kData = COLDSPRAY_TEST_DATA;
-const std::string kExamples = std::string(COLDSPRAY_SOURCE_DIR) + "/examples";
-const std::string kExample = kExamples + "/al-14um-810.yaml";
 
 // It died with SIGSEGV (status 139): the document walk recursed through the self-reference.
 TEST(InputGuards, CheckRefusesASelfReferenceInSet) {

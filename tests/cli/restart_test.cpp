@@ -25,7 +25,8 @@ namespace coldspray::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kExamples = std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/";
+const std::string kVerificationExamples =
+    std::string(COLDSPRAY_SOURCE_DIR) + "/examples/verification/";
 
 // summary.json without what depends on the wall clock and the threads the run had.
 nlohmann::json untimed_summary(const fs::path& run) {
@@ -93,7 +94,7 @@ void expect_restart_bit_identical(const std::string& case_file, const std::strin
 
 TEST(Restart, MpmAxisymmetricWithBondingIsBitIdentical) {
   expect_restart_bit_identical(
-      kExamples + "bonding-impact.yaml",
+      kVerificationExamples + "bonding-impact.yaml",
       "--set bodies.particle.spacing=0.5um --set bodies.substrate.spacing=0.5um "
       "--set grid.cell_size=1um --set solver.end_time=6ns --set output.checkpoint_interval=2ns "
       "--set output.snapshot_interval=1ns");
@@ -103,7 +104,7 @@ TEST(Restart, Mpm3dQuarterWithBondsFormedIsBitIdentical) {
   // The 14 um Al impact at 810 m/s on a quarter model at 1 um spacing: the particle's bonded
   // area more than doubles after the checkpoint at 3 ns (abp 0.31 then, 0.70 at 8 ns).
   expect_restart_bit_identical(
-      kExamples + "sliding-impact-3d.yaml",
+      kVerificationExamples + "sliding-impact-3d.yaml",
       "--set bonding.model=energy --set bodies.particle.spacing=1um "
       "--set bodies.substrate.spacing=1um --set grid.cell_size=2um --set solver.end_time=8ns "
       "--set metrics.verdict_extensions=0 --set output.checkpoint_interval=3ns "
@@ -113,14 +114,14 @@ TEST(Restart, Mpm3dQuarterWithBondsFormedIsBitIdentical) {
 TEST(Restart, Mpm3dWithBondingAndDeparturesIsBitIdentical) {
   // The fragment leaves the grid after the first checkpoint: the restart reads fewer points
   // than its setup seeds.
-  expect_restart_bit_identical(kExamples + "fragment-leaves.yaml",
+  expect_restart_bit_identical(kVerificationExamples + "fragment-leaves.yaml",
                                "--set bonding.model=energy --set output.checkpoint_interval=0.4ns "
                                "--set output.snapshot_interval=0.3ns");
 }
 
 TEST(Restart, PeridynamicsWithFlowControlAndContactIsBitIdentical) {
   expect_restart_bit_identical(
-      kExamples + "pd-quarter-impact.yaml",
+      kVerificationExamples + "pd-quarter-impact.yaml",
       "--set symmetry.x=0um --set symmetry.y=0um --set peridynamics.control_stiffness=flow "
       "--set solver.end_time=6ns --set output.checkpoint_interval=2ns "
       "--set output.snapshot_interval=1ns",
@@ -132,7 +133,7 @@ TEST(Restart, PeridynamicsWithInterfaceBondsIsBitIdentical) {
   // particle, still undecided at 6 ns, would extend the run to 46 ns (metrics.verdict_extensions):
   // not what this test checks, and 8 times the steps under the sanitizers.
   expect_restart_bit_identical(
-      kExamples + "pd-quarter-impact.yaml",
+      kVerificationExamples + "pd-quarter-impact.yaml",
       "--set symmetry.x=0um --set symmetry.y=0um --set contact.peridynamics.model=interface-bonds "
       "--set solver.end_time=6ns --set metrics.verdict_extensions=0 "
       "--set output.checkpoint_interval=2ns --set output.snapshot_interval=1ns");
@@ -190,13 +191,14 @@ TEST(Restart, AnotherCaseStartsFromACheckpointsState) {
       " --set bodies.particle.spacing=0.5um --set bodies.substrate.spacing=0.5um "
       "--set grid.cell_size=1um";
   const auto impact =
-      run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
+      run_coldspray("run '" + kVerificationExamples + "bonding-impact.yaml' --quiet --out '" +
                     (dir / "impact").string() + "' --set solver.end_time=6ns" + coarse);
   ASSERT_EQ(impact.status, 0) << impact.output;
   const fs::path last = checkpoints(dir / "impact").back();
-  const auto after = run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
-                                   (dir / "after").string() + "' --initial-state '" +
-                                   last.string() + "' --set solver.end_time=2ns" + coarse);
+  const auto after =
+      run_coldspray("run '" + kVerificationExamples + "bonding-impact.yaml' --quiet --out '" +
+                    (dir / "after").string() + "' --initial-state '" + last.string() +
+                    "' --set solver.end_time=2ns" + coarse);
   ASSERT_EQ(after.status, 0) << after.output;
   std::istringstream history(read_text(dir / "after" / "history.csv"));
   std::string header, first;
@@ -206,9 +208,10 @@ TEST(Restart, AnotherCaseStartsFromACheckpointsState) {
   EXPECT_EQ(after_time(first), after_time(last_row(dir / "impact" / "history.csv")));
 
   // Other bodies than the checkpoint's: refused, naming the checkpoint.
-  const auto finer = run_coldspray("run '" + kExamples + "bonding-impact.yaml' --quiet --out '" +
-                                   (dir / "finer").string() + "' --initial-state '" +
-                                   last.string() + "' --set grid.cell_size=1um");
+  const auto finer =
+      run_coldspray("run '" + kVerificationExamples + "bonding-impact.yaml' --quiet --out '" +
+                    (dir / "finer").string() + "' --initial-state '" + last.string() +
+                    "' --set grid.cell_size=1um");
   EXPECT_EQ(finer.status, 2) << finer.output;
   EXPECT_NE(finer.output.find("holds other bodies than this case seeds"), std::string::npos)
       << finer.output;
@@ -236,16 +239,17 @@ const std::vector<std::string> kLongRunSets = {"--set", "symmetry.x=0um",
 const std::string kLongRunEnd = "solver.end_time=6ns";
 
 std::vector<std::string> long_run_args(const fs::path& out) {
-  std::vector<std::string> args = {
-      "run",      kExamples + "pd-quarter-impact.yaml", "--quiet", "--out", out.string(), "--set",
-      kLongRunEnd};
+  std::vector<std::string> args = {"run",        kVerificationExamples + "pd-quarter-impact.yaml",
+                                   "--quiet",    "--out",
+                                   out.string(), "--set",
+                                   kLongRunEnd};
   args.insert(args.end(), kLongRunSets.begin(), kLongRunSets.end());
   return args;
 }
 
 // Runs the long case to its end in `whole`.
 void run_whole_long_case(const fs::path& whole) {
-  std::string args = "run '" + kExamples + "pd-quarter-impact.yaml' --quiet --out '" +
+  std::string args = "run '" + kVerificationExamples + "pd-quarter-impact.yaml' --quiet --out '" +
                      whole.string() + "' --set " + kLongRunEnd;
   for (std::size_t k = 0; k < kLongRunSets.size(); k += 2) args += " --set " + kLongRunSets[k + 1];
   const auto r = run_coldspray(args);
@@ -295,7 +299,7 @@ TEST(Restart, AfterKill9TheRunContinuesFromItsLastCheckpoint) {
 TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
   const fs::path dir = make_temp_dir();
   const fs::path sweep = dir / "sweep";
-  std::vector<std::string> args = {"sweep",  kExamples + "pd-quarter-impact.yaml",
+  std::vector<std::string> args = {"sweep",  kVerificationExamples + "pd-quarter-impact.yaml",
                                    "--vary", "solver.end_time=5ns,5.5ns,6ns",
                                    "--jobs", "1",
                                    "--out",  sweep.string()};
@@ -314,7 +318,7 @@ TEST(Restart, SigintStopsASweepWhichTheSameCommandFinishes) {
   kill(pid, SIGINT);
   EXPECT_EQ(exit_status(pid), 130);
   EXPECT_EQ(untimed_summary(first)["status"], "interrupted");
-  std::string again = "sweep '" + kExamples +
+  std::string again = "sweep '" + kVerificationExamples +
                       "pd-quarter-impact.yaml' --vary solver.end_time=5ns,5.5ns,6ns --jobs 1 "
                       "--out '" +
                       sweep.string() + "'";

@@ -23,10 +23,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const int kInputs = fuzz::budget(3000, 1000);
+const int kDepositInputs = fuzz::budget(3000, 1000);
 
 // Valid deposit files; tests/data/fuzz/deposit/refused holds the reproducers, each refused.
-std::vector<std::string> seeds() {
+std::vector<std::string> deposit_seeds() {
   return fuzz::yaml_texts(
       {COLDSPRAY_SOURCE_DIR "/examples/deposit", COLDSPRAY_TEST_DATA "/fuzz/deposit"}, false);
 }
@@ -60,7 +60,7 @@ void read_one(const std::string& path, const std::string& text, int input, int& 
 TEST(DepositFuzz, SeedsAreAccepted) {
   const std::string path = testing::make_temp_dir("deposit-fuzz") + "/deposit.yaml";
   int accepted = 0;
-  const std::vector<std::string> corpus = seeds();
+  const std::vector<std::string> corpus = deposit_seeds();
   ASSERT_GE(corpus.size(), 3u);
   for (const std::string& text : corpus) read_one(path, text, -1, accepted);
   EXPECT_EQ(accepted, static_cast<int>(corpus.size()));
@@ -78,10 +78,10 @@ TEST(DepositFuzz, ReproducersAreRefusedAtTheFile) {
 
 TEST(DepositFuzz, NoCrashNoStallEveryErrorAtTheFile) {
   const std::string path = testing::make_temp_dir("deposit-fuzz") + "/deposit.yaml";
-  const std::vector<std::string> corpus = seeds();
+  const std::vector<std::string> corpus = deposit_seeds();
   fuzz::Mutator m(20261205);
   int accepted = 0;
-  for (int i = 0; i < kInputs; ++i) {
+  for (int i = 0; i < kDepositInputs; ++i) {
     std::string text = m.pick(corpus);
     for (std::size_t k = m.below(3) + 1; k > 0; --k) {
       if (m.below(3) == 0)
@@ -93,7 +93,7 @@ TEST(DepositFuzz, NoCrashNoStallEveryErrorAtTheFile) {
   }
   // Both sides are exercised: some mutations keep a valid file, most break it.
   EXPECT_GT(accepted, 0);
-  EXPECT_LT(accepted, kInputs / 2);
+  EXPECT_LT(accepted, kDepositInputs / 2);
 }
 
 }  // namespace

@@ -27,8 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 using coldspray::testing::read_text;
 
-const int kInputs = fuzz::budget(3000, 1000);
-constexpr const char* kName = "fuzzed.yaml";
+const int kSetInputs = fuzz::budget(3000, 1000);
+constexpr const char* kSetCaseName = "fuzzed.yaml";
 
 // Valid cases, each a different part of the schema: MPM 3D and r-z, peridynamics, several
 // bodies, materials of the case's own, bonding, heat.
@@ -134,7 +134,7 @@ struct Seed {
   std::vector<std::string> paths;
 };
 
-std::vector<Seed> seeds() {
+std::vector<Seed> set_seeds() {
   std::vector<Seed> out;
   for (std::string_view c : kCases) {
     Seed s{read_text(fs::path(COLDSPRAY_SOURCE_DIR "/examples") / c), {}};
@@ -216,12 +216,12 @@ bool check_sets(const Seed& seed, const std::vector<std::string>& texts, const s
   try {
     std::vector<Override> sets;
     for (const std::string& t : texts) sets.push_back(parse_override(t));
-    load_case_text(kName, seed.text, {}, sets);
+    load_case_text(kSetCaseName, seed.text, {}, sets);
     refused = false;
   } catch (const InputError& e) {
     // At the --set, or at the key of the file that a --set value contradicts (contact.mpm.normal
     // naming a body a --set renamed; the grid's cell size, where its size cap is reported).
-    const bool at_a_key = e.where().starts_with(kName) && !e.key().empty();
+    const bool at_a_key = e.where().starts_with(kSetCaseName) && !e.key().empty();
     EXPECT_TRUE(e.where().starts_with("--set") || at_a_key) << label << shown << ": " << e.what();
     EXPECT_FALSE(e.message().empty()) << label << shown;
   } catch (const std::exception& e) {
@@ -234,7 +234,7 @@ bool check_sets(const Seed& seed, const std::vector<std::string>& texts, const s
 // Each reproducer is refused by some of the cases (a velocity along x only in r-z), every time
 // at its --set.
 TEST(SetFuzz, ReproducersAreRefusedAtTheirSet) {
-  const std::vector<Seed> cases = seeds();
+  const std::vector<Seed> cases = set_seeds();
   for (const auto& entry : fs::directory_iterator(COLDSPRAY_TEST_DATA "/fuzz/set")) {
     int refused = 0;
     for (const Seed& seed : cases)
@@ -244,11 +244,11 @@ TEST(SetFuzz, ReproducersAreRefusedAtTheirSet) {
 }
 
 TEST(SetFuzz, NoCrashNoStallEveryErrorAtItsSet) {
-  const std::vector<Seed> cases = seeds();
+  const std::vector<Seed> cases = set_seeds();
   fuzz::Mutator m(20261204);
   SetTexts texts(m);
   int accepted = 0;
-  for (int i = 0; i < kInputs; ++i) {
+  for (int i = 0; i < kSetInputs; ++i) {
     const Seed& seed = m.pick(cases);
     std::vector<std::string> sets;
     for (std::size_t n = m.below(3) + 1; n > 0; --n) sets.push_back(texts.next(seed.paths));

@@ -37,8 +37,15 @@ std::map<Site, int> coverage(const SeededPoints& p, double s, bool axi) {
 // Whether the cube of edge b centred at x, grown by b on every side (a cube of edge 3b; a square
 // in the plane y = 0 in r-z), holds a point of the region: sampled on a 31-point lattice along each
 // axis, whose spacing b / 10 is far below the distances the coarsening keeps. (Shrunk by a part in
-// 1e9: a cube grown by its edge may just touch the region, within rounding.)
+// 1e9: a cube grown by its edge may just touch the region, within rounding.) A cube apart from the
+// region's bounding box cannot meet the region; that exact test first keeps the sampling to the
+// cubes near it (under the sanitizers the sampling of every cube took 40 s a test).
 bool grown_cube_meets(const Shape& region, const Vec3& x, double b, bool axi) {
+  const Bounds box = bounding_box(region);
+  const Vec3 reach = 1.5 * b * (1.0 - 1e-9) * Vec3(1.0, axi ? 0.0 : 1.0, 1.0);
+  if (((x + reach).array() < box.min.array()).any() ||
+      ((x - reach).array() > box.max.array()).any())
+    return false;
   constexpr int n = 31;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < (axi ? 1 : n); ++j)

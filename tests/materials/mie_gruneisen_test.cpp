@@ -14,7 +14,7 @@
 namespace coldspray::materials {
 namespace {
 
-constexpr double kRho0 = 2700.0, kC0 = 5386.0, kS = 1.339, kGamma0 = 1.97;
+using namespace testing::al_eos;
 
 // validation-data.md §4, written out again: the reference (E = 0) pressure.
 double hand_A(double J) {

@@ -16,7 +16,7 @@
 namespace coldspray::materials {
 namespace {
 
-constexpr double kRho0 = 2700.0;
+using namespace testing::al_eos;
 
 // Eq 2.6, Al MTS constants.
 double mts_hand(double T) { return 28.8e9 - 3.44e9 / (std::exp(215.0 / T) - 1.0); }

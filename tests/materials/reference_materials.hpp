@@ -6,6 +6,11 @@
 
 namespace coldspray::materials::testing {
 
+// Aluminium's density and Mie-Gruneisen constants (al-ptw and al-jc), for the hand calculations.
+namespace al_eos {
+inline constexpr double kRho0 = 2700.0, kC0 = 5386.0, kS = 1.339, kGamma0 = 1.97;
+}  // namespace al_eos
+
 // data/materials/al-ptw.yaml.
 inline Material al_ptw() {
   Material m;

@@ -9,7 +9,7 @@
 namespace coldspray::materials {
 namespace {
 
-constexpr double kRho0 = 2700.0, kC0 = 5386.0, kGamma0 = 1.97;
+using namespace testing::al_eos;
 
 double al_p(double J, double E) {
   const double mu = 1.0 / J - 1.0;
