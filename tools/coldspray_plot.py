@@ -11,6 +11,8 @@ This tool reads them and writes PNG figures:
       history.csv columns against time, several runs overlaid;
   deposit DIR --out deposit.png
       a deposit's thickness map and section (coldspray deposit);
+  material-test A.csv [B.csv ...] --johnson-cook A,B,n,C,m,T_m --out curves.png
+      coldspray material-test curves beside the published Johnson-Cook formula;
   info DIR
       what a run folder holds: snapshot times, point fields, history columns.
 
@@ -852,6 +854,68 @@ def command_bulk_fracture(options):
     save_figure(fig, options.out, options.dpi)
 
 
+def parse_johnson_cook(text):
+    """--johnson-cook A,B,n,C,m,T_m[,T_ref,rate0]: A and B in MPa, T_m and T_ref in K, rate0 in
+    1/s (defaults 298 K and 1 1/s). Returns (A Pa, B Pa, n, C, m, T_m, T_ref, rate0)."""
+    parts = split_list([text])
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise PlotError(f"--johnson-cook {text}: not numbers") from None
+    if len(values) not in (6, 8):
+        raise PlotError(f"--johnson-cook {text}: give A,B,n,C,m,T_m or A,B,n,C,m,T_m,T_ref,rate0")
+    if len(values) == 6:
+        values += [298.0, 1.0]
+    a, b, n, c, m, melt, t_ref, rate0 = values
+    if not (melt > t_ref and rate0 > 0):
+        raise PlotError(f"--johnson-cook {text}: needs T_m > T_ref and rate0 > 0")
+    return (a * 1e6, b * 1e6, n, c, m, melt, t_ref, rate0)
+
+
+def johnson_cook_stress(constants, eqps, rate, temperature):
+    """Johnson & Cook 1983: (A + B eqps^n)(1 + C ln rate*)(1 - T*^m), with rate* = rate/rate0
+    floored at 1 and T* = (T - T_ref)/(T_m - T_ref) clamped to [0, 1], as docs/materials.md."""
+    a, b, n, c, m, melt, t_ref, rate0 = constants
+    t_star = min(max((temperature - t_ref) / (melt - t_ref), 0.0), 1.0)
+    return ((a + b * np.power(eqps, n)) * (1.0 + c * math.log(max(rate / rate0, 1.0)))
+            * (1.0 - t_star ** m))
+
+
+def command_material_test(options):
+    """`coldspray material-test` curves (von Mises stress against plastic strain), and with
+    --johnson-cook the published Johnson-Cook formula at each curve's plastic strain rate and
+    initial temperature beside them."""
+    labels = run_labels(options.csv, options.labels)
+    constants = parse_johnson_cook(options.johnson_cook) if options.johnson_cook else None
+    fig, ax = plt.subplots(layout="constrained", figsize=(options.panel_width, 4.0))
+    for path, label in zip(options.csv, labels):
+        rows = read_csv_rows(path)
+        try:
+            eqps = np.array([_to_float(r["eqps"]) for r in rows])
+            stress = np.array([abs(_to_float(r["von_mises"])) for r in rows])
+            rate = np.array([_to_float(r["eqps_rate"]) for r in rows])
+            temperature = _to_float(rows[0]["temperature"])
+        except KeyError as e:
+            raise PlotError(f"{path}: no column {e} (not a material-test CSV)") from None
+        line, = ax.plot(eqps, stress / 1e6, "-", label=f"{label}: coldspray material-test")
+        flowing = eqps > 0
+        if constants is None or not flowing.any():
+            continue
+        plastic_rate = float(np.median(rate[flowing]))
+        grid = np.linspace(0.0, float(eqps.max()), 200)
+        ax.plot(grid, johnson_cook_stress(constants, grid, plastic_rate, temperature) / 1e6, ":",
+                color=line.get_color(), linewidth=2.5,
+                label=f"{label}: published JC formula"
+                      + (f" ({options.source})" if options.source else ""))
+    ax.set_xlabel("equivalent plastic strain")
+    ax.set_ylabel("von Mises stress (MPa)")
+    if options.title:
+        ax.set_title(options.title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small")
+    save_figure(fig, options.out, options.dpi)
+
+
 def command_pull_off(options):
     """The PD paper's Fig 11(b): force across the interface against the grip's displacement,
     one line per pull-off folder (coldspray pull-off), its peak marked."""
@@ -1072,6 +1136,14 @@ def command_calibration(options):
 # Command line
 # --------------------------------------------------------------------------------------
 
+def add_figure_options(command, panel_width):
+    """--panel-width (inches), --dpi and the required --out of a command that writes one PNG."""
+    command.add_argument("--panel-width", type=float, default=panel_width,
+                         help="figure width, inches")
+    command.add_argument("--dpi", type=int, default=150)
+    command.add_argument("--out", required=True, help="PNG file to write")
+
+
 def build_parser():
     parser = argparse.ArgumentParser(
         prog="coldspray_plot.py", description="PNG figures from a coldspray run's output folder.")
@@ -1157,6 +1229,17 @@ def build_parser():
     bulk.add_argument("--dpi", type=int, default=150)
     bulk.add_argument("--out", required=True, help="PNG file to write")
     bulk.set_defaults(run=command_bulk_fracture)
+
+    mt = commands.add_parser("material-test", help="coldspray material-test curves, with the "
+                                                   "published Johnson-Cook formula beside them")
+    mt.add_argument("csv", nargs="+", help="material-test CSV files (--out of material-test)")
+    mt.add_argument("--labels", help="comma-separated curve labels (default: file names)")
+    mt.add_argument("--johnson-cook", help="published constants A,B,n,C,m,T_m[,T_ref,rate0] "
+                                           "(MPa, K, 1/s) to draw the formula beside each curve")
+    mt.add_argument("--source", help="the constants' publication, for the legend")
+    mt.add_argument("--title", help="figure title")
+    add_figure_options(mt, 6.0)
+    mt.set_defaults(run=command_material_test)
 
     pull = commands.add_parser("pull-off", help="force against displacement of pull-off tests "
                                                 "(coldspray pull-off; PD Fig 11b)")

@@ -1,8 +1,11 @@
 // `coldspray materials [NAME]`: list the built-in materials, or print one in full with sources.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "case/load.hpp"
 #include "cli/commands.hpp"
@@ -19,8 +22,11 @@ void add_materials(CLI::App& app) {
       case_file::print_material(case_file::resolve_material(*name), std::cout);
       return;
     }
-    for (const auto& n : case_file::builtin_material_names())
-      std::cout << fmt::format("{:10} {}\n", n, case_file::builtin_material(n).description);
+    const std::vector<std::string> names = case_file::builtin_material_names();
+    std::size_t width = 0;
+    for (const auto& n : names) width = std::max(width, n.size());
+    for (const auto& n : names)
+      std::cout << fmt::format("{:{}} {}\n", n, width, case_file::builtin_material(n).description);
   });
 }
 

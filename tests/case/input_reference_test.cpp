@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "case/case_schema.hpp"
+#include "case/load.hpp"
 #include "case_test_support.hpp"
 
 namespace coldspray::case_file {
@@ -116,6 +117,10 @@ TEST(InputReference, DocumentsEveryKeyAndChoice) {
   for (const char* form :
        {"`max-gradient`", "`average-gradient`", "`highest-id`", "`body:NAME`", "`base`"}) {
     EXPECT_TRUE(testing::contains(text.str(), form));
+  }
+  // The built-in materials' table lists every data/materials/NAME.yaml.
+  for (const std::string& name : builtin_material_names()) {
+    EXPECT_TRUE(testing::contains(text.str(), "| `" + name + "` |")) << name;
   }
 }
 

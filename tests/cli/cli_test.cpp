@@ -34,8 +34,13 @@ TEST(Cli, UnknownSubcommandIsBadInput) {
 TEST(Cli, MaterialsListsTheBuiltIns) {
   const auto r = run_coldspray("materials");
   ASSERT_EQ(r.status, 0) << r.output;
-  for (const char* name : {"al-ptw", "al-jc", "cu-jc", "cu-ptw"})
+  for (const char* name : {"al-ptw", "al-jc", "cu-jc", "cu-ptw", "al6061-jc", "in718-jc", "ni-jc",
+                           "ss316l-jc", "steel4340-jc", "ti64-jc"})
     EXPECT_NE(r.output.find(name), std::string::npos) << name;
+  // Each with its description, in one column after the longest name.
+  EXPECT_NE(r.output.find("steel4340-jc AISI 4340 steel (substrate)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("al-jc        Pure aluminium"), std::string::npos) << r.output;
 }
 
 TEST(Cli, MaterialsPrintsParametersAndSources) {

@@ -401,6 +401,27 @@ class PlotToolTest(unittest.TestCase):
         self.assert_failed_without_png(self.run_tool("bulk-fracture", folder, "--out", missing),
                                        missing, "fit.json")
 
+    def test_material_test_draws_curves_beside_the_johnson_cook_formula(self):
+        path_csv = write_material_test(self.out("material-test.csv"))
+        path = self.out("material-test.png")
+        self.assert_png(self.run_tool("material-test", path_csv, "--labels", "1e3 1/s",
+                                      "--johnson-cook", "90,292,0.31,0.025,1.09,1356",
+                                      "--source", "Johnson & Cook 1983", "--out", path), path)
+        wrong = self.out("material-test-jc.png")
+        self.assert_failed_without_png(self.run_tool("material-test", path_csv, "--johnson-cook",
+                                                     "90,292,0.31", "--out", wrong),
+                                       wrong, "--johnson-cook")
+
+    def test_johnson_cook_formula_matches_the_hand_calculation(self):
+        # OFHC Cu (Johnson & Cook 1983) at eqps 0.2, 1e3 1/s, 500 K: 261.89673983504822 MPa
+        # (the hand calculation of tests/materials/johnson_cook_test.cpp).
+        constants = self.tool.parse_johnson_cook("90,292,0.31,0.025,1.09,1356")
+        self.assertAlmostEqual(self.tool.johnson_cook_stress(constants, 0.2, 1e3, 500.0) / 1e6,
+                               261.89673983504822, places=9)
+        # Below the reference rate and temperature: no softening, A + B eqps^n.
+        self.assertAlmostEqual(self.tool.johnson_cook_stress(constants, 0.2, 1e-3, 200.0) / 1e6,
+                               90 + 292 * 0.2 ** 0.31, places=9)
+
     def test_pull_off_draws_force_against_displacement(self):
         folder = write_pull_off(self.out("pull-off"))
         path = self.out("pull-off.png")
@@ -481,6 +502,21 @@ def write_sweep(folder):
         f.write("case,status,contact.beta,particle.cor\n"
                 "case_0001,ok,0.002,0.08\ncase_0002,failed,0.004,nan\ncase_0003,ok,0.005,0.0\n")
     return folder
+
+
+def write_material_test(path):
+    """A material-test CSV as src/material_test/loading.cpp writes it: OFHC Cu in uniaxial stress
+    at 1e3 1/s, isothermal at 298 K, von Mises on the Johnson-Cook curve once it flows."""
+    import math
+    with open(path, "w") as f:
+        f.write("time,strain,eqps,eqps_rate,temperature,melt_temperature,shear_modulus,"
+                "flow_stress,von_mises,pressure,density\n")
+        for i in range(21):
+            eqps = 0.025 * i
+            stress = (90e6 + 292e6 * eqps ** 0.31) * (1 + 0.025 * math.log(1e3))
+            f.write(f"{i * 1e-5},{-eqps},{eqps},{1e3 if i else 0},298,1356,4.6e10,{stress},"
+                    f"{stress},{-stress / 3},8930\n")
+    return path
 
 
 def write_bulk_fracture(folder):
